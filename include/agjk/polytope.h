@@ -1,0 +1,95 @@
+/* SPDX-License-Identifier: MIT */
+/**
+ * @file agjk/polytope.h
+ * @brief Vertex adjacency (CSR) of a convex polytope from its hull triangles,
+ *        for hill-climbing support (see agjk_polytope in agjk/shapes.h).
+ *
+ * @defgroup agjk_polytope_adjacency Polytope adjacency
+ *
+ * Hill climbing walks from the hint vertex to a neighbour with a larger
+ * <direction, vertex> until none is larger. On the edge graph of a convex
+ * polytope a vertex with no better neighbour is a global maximiser (the
+ * simplex-method argument), so the walk is exact, and with a coherent hint
+ * (the previous query's vertex) it visits only a few vertices instead of all.
+ *
+ * Input: the hull's vertices (every one an extreme point, e.g. the `vertices`
+ * of Qhull's output renumbered 0..n-1) and its triangles, as three vertex
+ * indices each (any orientation; a triangulated non-triangular facet adds
+ * diagonals, which do no harm). Output: the CSR arrays of agjk_polytope:
+ * the neighbours of vertex i are neighbors[neighbor_offsets[i] ..
+ * neighbor_offsets[i+1] - 1], sorted ascending, no duplicates, no self loops.
+ *
+ * Two ways to call it:
+ * - caller-provided buffers, no allocation (firmware, offline tools):
+ *   agjk_polytope_adjacency_capacity() gives the buffer sizes,
+ *   agjk_polytope_adjacency_build_into() fills them;
+ * - agjk_polytope_build_adjacency() allocates the two arrays with malloc and
+ *   sets them in the agjk_polytope; agjk_polytope_free_adjacency() frees them.
+ * Nothing here is used during a query: queries never allocate.
+ * @{
+ */
+#ifndef AGJK_POLYTOPE_H
+#define AGJK_POLYTOPE_H
+
+#include "agjk/shapes.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/** Buffer sizes needed by agjk_polytope_adjacency_build_into(), in int32_t
+ *  elements: `*out_offsets_count` = vertex_count + 1 and `*out_neighbors_capacity`
+ *  = 6 * triangle_count (each triangle gives each of its corners two entries
+ *  before duplicates are removed; a closed hull ends up using half of it).
+ *  Returns AGJK_STATUS_INVALID_INPUT (and writes nothing) for NULL outputs,
+ *  vertex_count outside 1 .. AGJK_POLYTOPE_MAX_VERTICES, negative
+ *  triangle_count or a capacity that does not fit in int32_t; otherwise
+ *  AGJK_STATUS_SEPARATED (the library's "success" value for non-queries). */
+AGJK_API agjk_status agjk_polytope_adjacency_capacity(int32_t vertex_count,
+                                                      int32_t triangle_count,
+                                                      int32_t *out_offsets_count,
+                                                      int32_t *out_neighbors_capacity);
+
+/** Builds the CSR adjacency into caller buffers, allocating nothing.
+ *
+ * `triangles` holds 3 * triangle_count vertex indices. `neighbor_offsets`
+ * must have vertex_count + 1 elements and `neighbors` `neighbors_capacity`
+ * elements, at least what agjk_polytope_adjacency_capacity() says. On success
+ * neighbor_offsets[vertex_count] is the number of neighbour entries used.
+ *
+ * Returns AGJK_STATUS_SEPARATED on success, AGJK_STATUS_INVALID_INPUT for NULL
+ * pointers, sizes out of range, a too small buffer, an index outside
+ * 0 .. vertex_count - 1, a triangle that repeats a vertex, or (when
+ * vertex_count > 1) a vertex that no triangle uses: hill climbing from such a
+ * vertex would stop there, so interior and unused points must be removed
+ * first. Work: O(vertices + triangles * log(max degree)). The buffers'
+ * contents are unspecified after a failure. */
+AGJK_API agjk_status agjk_polytope_adjacency_build_into(int32_t vertex_count,
+                                                        const int32_t *triangles,
+                                                        int32_t triangle_count,
+                                                        int32_t *neighbor_offsets,
+                                                        int32_t *neighbors,
+                                                        int32_t neighbors_capacity);
+
+/** Convenience: allocates (malloc) and builds the adjacency of `polytope`
+ *  (whose `vertices` and `vertex_count` must be set) from its hull triangles,
+ *  and stores the arrays in polytope->neighbor_offsets / neighbors. Release
+ *  them with agjk_polytope_free_adjacency(). On failure the polytope is left
+ *  without adjacency (both pointers NULL) and nothing stays allocated.
+ *  Returns AGJK_STATUS_SEPARATED on success, AGJK_STATUS_INVALID_INPUT for bad
+ *  input (as agjk_polytope_adjacency_build_into()) or when memory runs out. */
+AGJK_API agjk_status agjk_polytope_build_adjacency(agjk_polytope *polytope,
+                                                   const int32_t *triangles,
+                                                   int32_t triangle_count);
+
+/** Frees arrays allocated by agjk_polytope_build_adjacency() and sets both
+ *  pointers to NULL. Safe on NULL and on a polytope without adjacency; must not
+ *  be used on caller-provided arrays. */
+AGJK_API void agjk_polytope_free_adjacency(agjk_polytope *polytope);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* AGJK_POLYTOPE_H */
+/** @} */
