@@ -9,6 +9,8 @@
  * frame (centred at the origin, axis-aligned) plus an agjk_shape_* function that
  * validates it and fills an agjk_shape pointing at it. The struct must outlive
  * the agjk_shape; after changing it, call the agjk_shape_* function again.
+ * Constructors return AGJK_STATUS_OK, or AGJK_STATUS_INVALID_INPUT (NULL pointer,
+ * NaN/Inf or negative size), in which case `shape` is left unchanged.
  * Each shape lives in its own object file, so a static link pulls in only the
  * shapes a program uses.
  * @{

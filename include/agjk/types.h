@@ -60,7 +60,10 @@ typedef enum agjk_status {
     /** An argument was invalid (NULL pointer, NaN/Inf, negative size, bad
      *  rotation, tolerance <= 0, max_iterations < 1, unknown enum, a support
      *  function that returned a non-finite point). Nothing was computed. */
-    AGJK_STATUS_INVALID_INPUT = 4
+    AGJK_STATUS_INVALID_INPUT = 4,
+    /** Success of a function that gives no geometric verdict (the shape
+     *  constructors of agjk/shapes.h). Queries never return it. */
+    AGJK_STATUS_OK = 5
 } agjk_status;
 
 /** Choice of support direction in the Frank-Wolfe family loop
@@ -144,7 +147,7 @@ typedef struct agjk_options {
      *  floor (about 1e-15 of the squared size of the problem) cannot be met:
      *  the solver stops there and result.gap tells what it reached. */
     double tolerance;
-    /** Iteration cap, >= 1. Default 128 (1000 in the paper's benchmark). */
+    /** Iteration cap, >= 1. Default 1000 (the paper's benchmark setting). */
     int32_t max_iterations;
     /** AGJK_COMPUTE_* flags for agjk_distance. Default AGJK_COMPUTE_WITNESS.
      *  agjk_collide ignores it and never computes witness points. */

@@ -1,0 +1,55 @@
+/* SPDX-License-Identifier: MIT */
+/* Internal: the support function of the Minkowski difference D = A - B,
+ * expressed in the local frame of A (GJK88; Montaut et al. 2022, eq. 8). */
+#ifndef AGJK_SRC_MINKOWSKI_H
+#define AGJK_SRC_MINKOWSKI_H
+
+#include "vec3.h"
+
+/* One point of D with the points of A and B it came from (both in A's frame). */
+typedef struct agjk__vertex {
+    agjk_vec3 w; /* a - b */
+    agjk_vec3 a;
+    agjk_vec3 b;
+} agjk__vertex;
+
+typedef struct agjk__minkowski {
+    agjk_support_fn support_a, support_b;
+    const void *data_a, *data_b;
+    double rotation[3][3]; /* B's local frame -> A's frame: R_A^T R_B */
+    agjk_vec3 translation; /* B's origin in A's frame: R_A^T (t_B - t_A) */
+    double margin_a, margin_b;
+    double margin;         /* margin_a + margin_b */
+    int hint_a, hint_b;
+    int bad_support;       /* a callback returned a non-finite point */
+    /* Largest |a| + |b| seen, for the floating-point noise estimate. */
+    double magnitude;
+} agjk__minkowski;
+
+/* Checks a pose: finite, rotation orthonormal with det +1 (to 1e-6). */
+int agjk__pose_is_valid(const agjk_pose *pose);
+
+/* Prepares the relative transform. Shapes and poses must have been validated. */
+void agjk__minkowski_init(agjk__minkowski *md, const agjk_shape *a, const agjk_pose *pose_a,
+                          const agjk_shape *b, const agjk_pose *pose_b, int hint_a, int hint_b);
+
+/* s = argmin_{s in D} <d, s> = S_A(-d) - S_B(d) (paper eq. 7-8), d in A's frame, non-zero. */
+static inline void agjk__minkowski_support(agjk__minkowski *md, agjk_vec3 d, agjk__vertex *out) {
+    agjk_vec3 na = v3_neg(d);
+    agjk_vec3 db = m3_tmul(&md->rotation[0][0], d);
+    agjk_vec3 pa, pb;
+    md->support_a(md->data_a, &na, &pa, &md->hint_a);
+    md->support_b(md->data_b, &db, &pb, &md->hint_b);
+    if (!v3_isfinite(pa) || !v3_isfinite(pb)) {
+        md->bad_support = 1;
+        pa = v3(0.0, 0.0, 0.0);
+        pb = v3(0.0, 0.0, 0.0);
+    }
+    double mag = v3_maxabs(pa) + v3_maxabs(pb);
+    if (mag > md->magnitude) md->magnitude = mag;
+    out->a = pa;
+    out->b = v3_add(m3_mul(&md->rotation[0][0], pb), md->translation);
+    out->w = v3_sub(out->a, out->b);
+}
+
+#endif

@@ -1,0 +1,24 @@
+/* SPDX-License-Identifier: MIT */
+/* Internal: helpers shared by the built-in shapes (header-only, so a program
+ * linking one shape pulls in no other shape's object file). */
+#ifndef AGJK_SRC_SHAPE_COMMON_H
+#define AGJK_SRC_SHAPE_COMMON_H
+
+#include "agjk/shapes.h"
+#include "vec3.h"
+
+static inline int size_is_valid(double v) { return isfinite(v) && v >= 0.0; }
+
+static inline agjk_status shape_fill(agjk_shape *shape, agjk_support_fn support, const void *data,
+                                     double margin) {
+    shape->support = support;
+    shape->data = data;
+    shape->margin = margin;
+    return AGJK_STATUS_OK;
+}
+
+/* The sign used by box-like supports: +1 for d >= +0, -1 for d < 0 or -0
+ * (any choice maximises when d == 0). */
+static inline double support_sign(double d) { return signbit(d) ? -1.0 : 1.0; }
+
+#endif

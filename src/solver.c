@@ -1,0 +1,207 @@
+/* SPDX-License-Identifier: MIT */
+/* The Frank-Wolfe family loop on D = A - B (Montaut et al., "Collision
+ * Detection Accelerated: An Optimization Perspective", RSS 2022).
+ *
+ *   GJK (Alg. 4/5)      d_k = x_k; active set = smallest sub-simplex holding x_{k+1}
+ *   Nesterov (Alg. 6)   d_k from momentum; fallback to d_k = x_k once g(x_k) <= eps
+ *   normalized (Alg. 7) the same with normalised momentum terms
+ *   Polyak (GJK++)      heavy-ball momentum on d_k, same fallback
+ *   FW (Alg. 1)         d_k = x_k; x_{k+1} = projection of 0 onto [x_k, s_k]
+ *
+ * Stopping uses the Frank-Wolfe duality gap g(x) = 2 <x, x - s>, s = S_D(x)
+ * (eq. 12-13), which certifies ||x - x*||^2 <= g. With momentum, g computed with
+ * s = S_D(d_k) is not a certificate; it only triggers the fallback (eq. 28-30).
+ *
+ * Every loop is bounded by max_iterations; the simplex projection is
+ * non-iterative. No allocation: the simplex lives on the stack. */
+#include "solver.h"
+
+#include "simplex.h"
+
+/* Tolerance actually used: the requested one, but never below what the
+ * floating-point evaluation of g can resolve (2 ||x|| times the error of w),
+ * so that huge or far-away problems stop instead of churning at the noise. */
+static double effective_tolerance(const agjk__solve_input *in, double x_norm2, double noise) {
+    double requested = in->relative ? in->tolerance * x_norm2 : in->tolerance;
+    double floor = 2.0 * sqrt(x_norm2) * noise;
+    return requested > floor ? requested : floor;
+}
+
+/* Error scale of a computed point of D: a few ulps of the magnitudes involved
+ * (the support points and B's translation in A's frame). */
+static double noise_scale(const agjk__minkowski *md) {
+    return 64.0 * DBL_EPSILON * (md->magnitude + v3_maxabs(md->translation));
+}
+
+/* Alg. 2: the plane of normal d through s separates D (inflated by the margins)
+ * from the origin when <d, s> > ||d|| (margin + rounding). */
+static int separates(const agjk__minkowski *md, agjk_vec3 d, agjk_vec3 w) {
+    return v3_dot(d, w) > v3_norm(d) * (md->margin + noise_scale(md));
+}
+
+/* Adds s to the active set and projects the origin onto its hull, keeping only
+ * the vertices with positive weight (Alg. 4 line 7 / Alg. 5). Returns 1 when
+ * the origin is enclosed by a full tetrahedron. */
+static int update_simplex(agjk__vertex *simplex, int *count, double lambda[4],
+                          const agjk__vertex *s, agjk_vec3 *x) {
+    simplex[(*count)++] = *s;
+    agjk_vec3 w[4];
+    for (int i = 0; i < *count; ++i) w[i] = simplex[i].w;
+    double l[4];
+    unsigned mask = agjk__simplex_project(w, *count, l, x);
+    if (mask == 0xFu) {
+        for (int i = 0; i < 4; ++i) lambda[i] = l[i];
+        return 1;
+    }
+    int kept = 0;
+    for (int i = 0; i < *count; ++i) {
+        if (mask & (1u << i)) {
+            simplex[kept] = simplex[i];
+            lambda[kept] = l[i];
+            ++kept;
+        }
+    }
+    *count = kept;
+    return 0;
+}
+
+/* Plain Frank-Wolfe with exact line search (Alg. 1): the active set is the
+ * iterate itself, stored as one vertex whose a, b accumulate the convex
+ * combination so that witness points stay available. */
+static void update_frank_wolfe(agjk__vertex *simplex, int *count, double lambda[4],
+                               const agjk__vertex *s, agjk_vec3 *x) {
+    if (*count == 0) {
+        simplex[0] = *s;
+    } else {
+        agjk_vec3 w[2] = {simplex[0].w, s->w};
+        double l[4];
+        agjk__simplex_project(w, 2, l, x);
+        simplex[0].a = v3_lerp2(simplex[0].a, l[0], s->a, l[1]);
+        simplex[0].b = v3_lerp2(simplex[0].b, l[0], s->b, l[1]);
+        simplex[0].w = *x;
+    }
+    *count = 1;
+    lambda[0] = 1.0;
+    *x = simplex[0].w;
+}
+
+static int parallel(agjk_vec3 d, agjk_vec3 x) {
+    agjk_vec3 c = v3_cross(d, x);
+    return v3_norm2(c) == 0.0 && v3_dot(d, x) > 0.0;
+}
+
+void agjk__solve(agjk__minkowski *md, const agjk__solve_input *in, agjk__solve_output *out) {
+    agjk__vertex simplex[4];
+    double lambda[4] = {1.0, 0.0, 0.0, 0.0};
+    int count = 0;
+    agjk_vec3 x = in->x0;
+    int have_x = 0; /* x is a point of D (after the first projection) */
+    agjk__momentum m;
+    m.method = in->method;
+    m.active = agjk__method_has_momentum(in->method);
+    m.d_prev = x;
+    m.s_prev = x;
+
+    out->outcome = AGJK__ITERATION_CAP;
+    out->gap = INFINITY;
+    out->gap_valid = 0;
+    out->iterations = 0;
+    out->support_calls = 0;
+    out->momentum_stop = -1;
+    out->direction = v3(0.0, 0.0, 0.0);
+
+    agjk__vertex s;
+    for (int k = 0; k < in->max_iterations; ++k) {
+        out->iterations = k + 1;
+        agjk_vec3 d = m.active ? agjk__momentum_direction(&m, k, x) : x;
+        agjk__minkowski_support(md, d, &s);
+        ++out->support_calls;
+        if (md->bad_support) { out->outcome = AGJK__BAD_SUPPORT; break; }
+        if (in->boolean_mode && separates(md, d, s.w)) {
+            out->outcome = AGJK__SEPARATED_EARLY;
+            out->direction = d;
+            break;
+        }
+        if (have_x) {
+            double x2 = v3_norm2(x);
+            double tol = effective_tolerance(in, x2, noise_scale(md));
+            double g = 2.0 * v3_dot(x, v3_sub(x, s.w)); /* eq. 29 */
+            if (m.active && g <= tol) {
+                /* Alg. 6 lines 5-7: the momentum direction makes no progress. */
+                if (parallel(d, x)) {
+                    out->gap = g;
+                    out->gap_valid = 1;
+                    out->outcome = AGJK__CONVERGED;
+                    break;
+                }
+                m.active = 0;
+                out->momentum_stop = k;
+                d = x;
+                agjk__minkowski_support(md, d, &s);
+                ++out->support_calls;
+                if (md->bad_support) { out->outcome = AGJK__BAD_SUPPORT; break; }
+                if (in->boolean_mode && separates(md, d, s.w)) {
+                    out->outcome = AGJK__SEPARATED_EARLY;
+                    out->direction = d;
+                    break;
+                }
+                g = 2.0 * v3_dot(x, v3_sub(x, s.w));
+            }
+            if (!m.active) {
+                out->gap = g; /* a true Frank-Wolfe gap: s = S_D(x) */
+                out->gap_valid = 1;
+                if (g <= tol) { out->outcome = AGJK__CONVERGED; break; }
+            }
+        }
+        agjk_vec3 x_new;
+        int enclosed;
+        if (in->method == AGJK_METHOD_FRANK_WOLFE) {
+            update_frank_wolfe(simplex, &count, lambda, &s, &x_new);
+            enclosed = v3_norm2(x_new) == 0.0;
+        } else {
+            enclosed = update_simplex(simplex, &count, lambda, &s, &x_new);
+        }
+        double x_new2 = v3_norm2(x_new);
+        /* Plain directions must decrease ||x||; if rounding stops that, further
+         * iterations would only cycle. Momentum iterates may legitimately stay. */
+        int stalled = have_x && !m.active && !enclosed && x_new2 >= v3_norm2(x);
+        x = x_new;
+        have_x = 1;
+        out->gap_valid = 0;
+        if (enclosed || x_new2 == 0.0 ||
+            sqrt(x_new2) + noise_scale(md) < md->margin) {
+            out->outcome = AGJK__INTERSECTING;
+            break;
+        }
+        if (stalled) { out->outcome = AGJK__STALLED; break; }
+        m.d_prev = d;
+        m.s_prev = s.w;
+    }
+
+    /* Without a valid gap at the final iterate (cap, stall, or momentum still
+     * on), one support in direction x certifies what was reached. */
+    if ((out->outcome == AGJK__ITERATION_CAP || out->outcome == AGJK__STALLED) && have_x &&
+        !out->gap_valid) {
+        agjk__minkowski_support(md, x, &s);
+        ++out->support_calls;
+        if (md->bad_support) {
+            out->outcome = AGJK__BAD_SUPPORT;
+        } else if (in->boolean_mode && separates(md, x, s.w)) {
+            out->outcome = AGJK__SEPARATED_EARLY;
+            out->direction = x;
+        } else {
+            out->gap = 2.0 * v3_dot(x, v3_sub(x, s.w));
+            out->gap_valid = 1;
+        }
+    }
+
+    out->x = x;
+    out->noise = noise_scale(md);
+    agjk_vec3 a = v3(0.0, 0.0, 0.0), b = v3(0.0, 0.0, 0.0);
+    for (int i = 0; in->want_witness && i < count; ++i) {
+        a = v3_add(a, v3_scale(simplex[i].a, lambda[i]));
+        b = v3_add(b, v3_scale(simplex[i].b, lambda[i]));
+    }
+    out->a = a;
+    out->b = b;
+}

@@ -1,0 +1,62 @@
+/* SPDX-License-Identifier: MIT */
+/* Internal: tiny 3-vector helpers. Value semantics, all inline. */
+#ifndef AGJK_SRC_VEC3_H
+#define AGJK_SRC_VEC3_H
+
+#include <float.h>
+#include <math.h>
+
+#include "agjk/types.h"
+
+static inline agjk_vec3 v3(double x, double y, double z) {
+    agjk_vec3 r;
+    r.x = x;
+    r.y = y;
+    r.z = z;
+    return r;
+}
+static inline agjk_vec3 v3_add(agjk_vec3 a, agjk_vec3 b) { return v3(a.x + b.x, a.y + b.y, a.z + b.z); }
+static inline agjk_vec3 v3_sub(agjk_vec3 a, agjk_vec3 b) { return v3(a.x - b.x, a.y - b.y, a.z - b.z); }
+static inline agjk_vec3 v3_scale(agjk_vec3 a, double s) { return v3(a.x * s, a.y * s, a.z * s); }
+static inline agjk_vec3 v3_neg(agjk_vec3 a) { return v3(-a.x, -a.y, -a.z); }
+static inline double v3_dot(agjk_vec3 a, agjk_vec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+static inline double v3_norm2(agjk_vec3 a) { return v3_dot(a, a); }
+static inline double v3_norm(agjk_vec3 a) { return sqrt(v3_dot(a, a)); }
+static inline agjk_vec3 v3_cross(agjk_vec3 a, agjk_vec3 b) {
+    return v3(a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x);
+}
+/* a * s + b * t */
+static inline agjk_vec3 v3_lerp2(agjk_vec3 a, double s, agjk_vec3 b, double t) {
+    return v3(a.x * s + b.x * t, a.y * s + b.y * t, a.z * s + b.z * t);
+}
+static inline int v3_isfinite(agjk_vec3 a) {
+    return isfinite(a.x) && isfinite(a.y) && isfinite(a.z);
+}
+static inline double v3_maxabs(agjk_vec3 a) {
+    double m = fabs(a.x);
+    if (fabs(a.y) > m) m = fabs(a.y);
+    if (fabs(a.z) > m) m = fabs(a.z);
+    return m;
+}
+/* Unit vector along a, or the zero vector when a is zero. Scales first so that
+ * tiny or huge vectors neither underflow nor overflow in the squared norm. */
+static inline agjk_vec3 v3_normalize(agjk_vec3 a) {
+    double m = v3_maxabs(a);
+    if (!(m > 0.0)) return v3(0.0, 0.0, 0.0);
+    a = v3_scale(a, 1.0 / m);
+    return v3_scale(a, 1.0 / v3_norm(a));
+}
+/* R * p and R^T * p for a row-major 3x3 matrix given as 9 doubles
+ * (pass &m[0][0]: C99 cannot convert double(*)[3] to const double(*)[3]). */
+static inline agjk_vec3 m3_mul(const double *r, agjk_vec3 p) {
+    return v3(r[0] * p.x + r[1] * p.y + r[2] * p.z,
+              r[3] * p.x + r[4] * p.y + r[5] * p.z,
+              r[6] * p.x + r[7] * p.y + r[8] * p.z);
+}
+static inline agjk_vec3 m3_tmul(const double *r, agjk_vec3 p) {
+    return v3(r[0] * p.x + r[3] * p.y + r[6] * p.z,
+              r[1] * p.x + r[4] * p.y + r[7] * p.z,
+              r[2] * p.x + r[5] * p.y + r[8] * p.z);
+}
+
+#endif
