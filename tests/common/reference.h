@@ -36,6 +36,18 @@ typedef struct ref_result {
     long double lower;     /* certified lower bound on the distance */
     long double upper;     /* certified upper bound on the distance */
     int iterations;
+    /* --- appended by helper A (tests/common owner) --- */
+    /* Unit vector, world frame, from A towards B along the closest points
+     * (-x / |x| for the core closest point x of D = A - B); zero when the
+     * core distance is zero or the shapes intersect. */
+    agjk_vec3 normal;
+    /* Closest points on A and on B (margins included), world frame; when the
+     * shapes intersect, a common point of the cores is not known: both are
+     * then the core points found last (not meaningful). */
+    agjk_vec3 witness_a, witness_b;
+    /* Characteristic size used for the stopping test: the largest norm of a
+     * support point of D met during the run (length units). */
+    long double scale;
 } ref_result;
 
 /* Builds the agjk_shape for `s` (pointing into s's own storage, so `s` must outlive it). */
@@ -44,5 +56,27 @@ agjk_status ref_make_agjk(ref_shape *s, agjk_shape *out);
 /* Reference distance; returns 0 on success (converged or intersecting). */
 int ref_distance(const ref_shape *a, const agjk_pose *pose_a,
                  const ref_shape *b, const agjk_pose *pose_b, ref_result *out);
+
+/* Support point of the whole shape `s` (margin included) in its local frame,
+ * in long double: a point p of s maximising <direction, p>. For tests of
+ * support functions. `direction` need not be normalised; zero gives the core
+ * support in an arbitrary fixed direction. */
+void ref_support_local(const ref_shape *s, const long double direction[3],
+                       long double out[3]);
+
+/* Projection of the origin onto conv(vertices[0..count-1]), 1 <= count <= 4,
+ * by brute force: the affine projection of every one of the 2^count - 1
+ * subsets is solved in long double, candidates with all weights >= 0 are kept,
+ * the one of least norm wins (ties to the smallest subset). */
+typedef struct ref_projection {
+    long double point[3];
+    long double weights[4];
+    long double distance;   /* |point| */
+    unsigned mask;          /* vertices of the winning subset */
+    int count;              /* bits in mask */
+} ref_projection;
+
+/* Returns 0 on success, -1 for count outside 1..4 or a NULL pointer. */
+int ref_project_origin(const agjk_vec3 *vertices, int count, ref_projection *out);
 
 #endif
