@@ -49,7 +49,7 @@ agjk_status agjk_polytope_adjacency_capacity(int32_t vertex_count, int32_t trian
     if (triangle_count < 0 || triangle_count > INT32_MAX / 6) return AGJK_STATUS_INVALID_INPUT;
     *out_offsets_count = vertex_count + 1;
     *out_neighbors_capacity = 6 * triangle_count;
-    return AGJK_STATUS_SEPARATED;
+    return AGJK_STATUS_OK;
 }
 
 /* Pass 1: offsets[i] = start of vertex i's (not yet deduplicated) entries.
@@ -111,7 +111,7 @@ agjk_status agjk_polytope_adjacency_build_into(int32_t vertex_count, const int32
                                                int32_t *neighbors, int32_t neighbors_capacity) {
     int32_t offsets_count, needed;
     if (agjk_polytope_adjacency_capacity(vertex_count, triangle_count, &offsets_count, &needed) !=
-        AGJK_STATUS_SEPARATED)
+        AGJK_STATUS_OK)
         return AGJK_STATUS_INVALID_INPUT;
     if (!neighbor_offsets || (triangle_count > 0 && (!triangles || !neighbors)))
         return AGJK_STATUS_INVALID_INPUT;
@@ -120,7 +120,7 @@ agjk_status agjk_polytope_adjacency_build_into(int32_t vertex_count, const int32
         return AGJK_STATUS_INVALID_INPUT;
     scatter_entries(vertex_count, triangles, triangle_count, neighbor_offsets, neighbors);
     if (!compact_entries(vertex_count, neighbor_offsets, neighbors)) return AGJK_STATUS_INVALID_INPUT;
-    return AGJK_STATUS_SEPARATED;
+    return AGJK_STATUS_OK;
 }
 
 agjk_status agjk_polytope_build_adjacency(agjk_polytope *polytope, const int32_t *triangles,
@@ -130,7 +130,7 @@ agjk_status agjk_polytope_build_adjacency(agjk_polytope *polytope, const int32_t
     polytope->neighbor_offsets = NULL;
     polytope->neighbors = NULL;
     if (agjk_polytope_adjacency_capacity(polytope->vertex_count, triangle_count, &offsets_count,
-                                         &capacity) != AGJK_STATUS_SEPARATED)
+                                         &capacity) != AGJK_STATUS_OK)
         return AGJK_STATUS_INVALID_INPUT;
     /* One block: offsets first, then neighbours, so one free() releases both. */
     size_t total = (size_t)offsets_count + (size_t)capacity;
@@ -138,7 +138,7 @@ agjk_status agjk_polytope_build_adjacency(agjk_polytope *polytope, const int32_t
     if (!block) return AGJK_STATUS_INVALID_INPUT;
     agjk_status status = agjk_polytope_adjacency_build_into(
         polytope->vertex_count, triangles, triangle_count, block, block + offsets_count, capacity);
-    if (status != AGJK_STATUS_SEPARATED) {
+    if (status != AGJK_STATUS_OK) {
         free(block);
         return status;
     }
@@ -148,7 +148,7 @@ agjk_status agjk_polytope_build_adjacency(agjk_polytope *polytope, const int32_t
     if (shrunk) block = shrunk;
     polytope->neighbor_offsets = block;
     polytope->neighbors = block + offsets_count;
-    return AGJK_STATUS_SEPARATED;
+    return AGJK_STATUS_OK;
 }
 
 void agjk_polytope_free_adjacency(agjk_polytope *polytope) {

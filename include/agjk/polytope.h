@@ -44,7 +44,7 @@ extern "C" {
  *  Returns AGJK_STATUS_INVALID_INPUT (and writes nothing) for NULL outputs,
  *  vertex_count outside 1 .. AGJK_POLYTOPE_MAX_VERTICES, negative
  *  triangle_count or a capacity that does not fit in int32_t; otherwise
- *  AGJK_STATUS_SEPARATED (the library's "success" value for non-queries). */
+ *  AGJK_STATUS_OK. */
 AGJK_API agjk_status agjk_polytope_adjacency_capacity(int32_t vertex_count,
                                                       int32_t triangle_count,
                                                       int32_t *out_offsets_count,
@@ -57,7 +57,7 @@ AGJK_API agjk_status agjk_polytope_adjacency_capacity(int32_t vertex_count,
  * elements, at least what agjk_polytope_adjacency_capacity() says. On success
  * neighbor_offsets[vertex_count] is the number of neighbour entries used.
  *
- * Returns AGJK_STATUS_SEPARATED on success, AGJK_STATUS_INVALID_INPUT for NULL
+ * Returns AGJK_STATUS_OK on success, AGJK_STATUS_INVALID_INPUT for NULL
  * pointers, sizes out of range, a too small buffer, an index outside
  * 0 .. vertex_count - 1, a triangle that repeats a vertex, or (when
  * vertex_count > 1) a vertex that no triangle uses: hill climbing from such a
@@ -76,7 +76,7 @@ AGJK_API agjk_status agjk_polytope_adjacency_build_into(int32_t vertex_count,
  *  and stores the arrays in polytope->neighbor_offsets / neighbors. Release
  *  them with agjk_polytope_free_adjacency(). On failure the polytope is left
  *  without adjacency (both pointers NULL) and nothing stays allocated.
- *  Returns AGJK_STATUS_SEPARATED on success, AGJK_STATUS_INVALID_INPUT for bad
+ *  Returns AGJK_STATUS_OK on success, AGJK_STATUS_INVALID_INPUT for bad
  *  input (as agjk_polytope_adjacency_build_into()) or when memory runs out. */
 AGJK_API agjk_status agjk_polytope_build_adjacency(agjk_polytope *polytope,
                                                    const int32_t *triangles,
