@@ -91,7 +91,9 @@ install: lib tools
 	install -m 755 $(LIB_SO_REAL) $(DESTDIR)$(LIBDIR)/
 	ln -sf libagjk.so.$(VERSION) $(DESTDIR)$(LIBDIR)/$(LIB_SO_NAME)
 	ln -sf libagjk.so.$(VERSION) $(DESTDIR)$(LIBDIR)/libagjk.so
-	install -m 644 $(PC_FILE) $(DESTDIR)$(LIBDIR)/pkgconfig/
+	sed -e 's|@PREFIX@|$(PREFIX)|g' -e 's|@LIBDIR@|$(LIBDIR)|g' \
+	    -e 's|@INCLUDEDIR@|$(INCLUDEDIR)|g' -e 's|@VERSION@|$(VERSION)|g' \
+	    agjk.pc.in > $(DESTDIR)$(LIBDIR)/pkgconfig/agjk.pc
 	$(if $(INSTALL_BINS),install -m 755 $(INSTALL_BINS) $(DESTDIR)$(BINDIR)/)
 
 uninstall:

@@ -1,0 +1,29 @@
+#!/bin/sh
+# "Leave out what a scene does not need": a program using only spheres and
+# boxes, linked statically with --gc-sections, must contain no polytope, hull,
+# adjacency, ellipsoid, cylinder or cone code. Prints its text size.
+set -eu
+bin=${1:-out/examples/spheres_and_boxes}
+unwanted=$(nm "$bin" | grep -i -E 'polytope|adjacency|hull|ellipsoid|cylinder|cone_|capsule|segment_support|(^| |_)epa' || true)
+if [ -n "$unwanted" ]; then
+    echo "lean link: unexpected symbols in $bin:" >&2
+    echo "$unwanted" >&2
+    exit 1
+fi
+"$bin" >/dev/null
+text=$(size -A "$bin" | awk '$1 == ".text" {print $2}')
+# Code kept from libagjk.a, from the linker map: sum of the input .text
+# sections of its members (a long section name puts the numbers on the next line).
+lib_text=$(awk '
+    function hex(h,   i, c, v) { v = 0; h = tolower(substr(h, 3))
+        for (i = 1; i <= length(h); ++i) { c = index("0123456789abcdef", substr(h, i, 1)) - 1; v = v * 16 + c }
+        return v }
+    /^Linker script and memory map/ { kept = 1 }   # before it: discarded sections
+    !kept { next }
+    /^ \.text/ && NF == 1 { name = $1; getline; $0 = " " name " " $0 }
+    /^ \.text/ && /libagjk\.a\(/ { s += hex($3) }
+    END { print s + 0 }' "$bin.map")
+members=$(sed -n '/^Linker script and memory map/,$p' "$bin.map" | grep -o 'libagjk\.a([a-z_]*\.o)' | sort -u | sed 's/.*(\(.*\))/\1/' | tr '\n' ' ')
+echo "lean link: spheres+boxes static binary: .text $text bytes, of which agjk $lib_text bytes"
+echo "lean link: agjk objects linked: $members"
+echo "lean link: 1 passed, 0 failed"
