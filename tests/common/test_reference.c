@@ -9,6 +9,7 @@
 #include <check.h>
 #include <math.h>
 #include <stdio.h>
+#include "check_main.h"
 #include "reference.h"
 #include "testutil.h"
 
@@ -195,24 +196,13 @@ START_TEST(projection_optimality) {
 }
 END_TEST
 
-static Suite *reference_suite(void) {
-    Suite *s = suite_create("reference");
-    TCase *tc = tcase_create("analytic");
-    tcase_set_timeout(tc, 60);
-    tcase_add_test(tc, sphere_sphere);
-    tcase_add_test(tc, box_box_axis_aligned);
-    tcase_add_test(tc, box_box_touching);
-    tcase_add_test(tc, sphere_box_rotated);
-    tcase_add_test(tc, polytope_equals_box);
-    tcase_add_test(tc, projection_optimality);
-    suite_add_tcase(s, tc);
-    return s;
-}
-
 int main(void) {
-    SRunner *sr = srunner_create(reference_suite());
-    srunner_run_all(sr, CK_NORMAL);
-    int failed = srunner_ntests_failed(sr);
-    srunner_free(sr);
-    return failed == 0 ? 0 : 1;
+    Suite *s = suite_create("reference");
+    TU_ADD(s, sphere_sphere);
+    TU_ADD(s, box_box_axis_aligned);
+    TU_ADD(s, box_box_touching);
+    TU_ADD(s, sphere_box_rotated);
+    TU_ADD(s, polytope_equals_box);
+    TU_ADD(s, projection_optimality);
+    return tu_run_suite(s);
 }

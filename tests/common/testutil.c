@@ -196,3 +196,13 @@ int tu_set_distance(const ref_shape *a, const agjk_pose *pose_a, const ref_shape
     tu_pose_translate(pose_b, tu_scale(res.normal, target - (double)res.distance));
     return 0;
 }
+
+double tu_distance_to_shape(const ref_shape *s, const agjk_pose *pose, agjk_vec3 p) {
+    ref_shape pt;
+    ref_result r;
+    agjk_pose pp = tu_pose_identity();
+    tu_shape_init(&pt, REF_POINT, 0, 0, 0);
+    pp.translation = p;
+    if (ref_distance(s, pose, &pt, &pp, &r) < 0) return NAN;
+    return (double)r.distance;
+}

@@ -1,0 +1,296 @@
+/* SPDX-License-Identifier: MIT */
+/* agjk_simplex_project_origin against the long double brute force of
+ * tests/common (ref_project_origin), on random, degenerate and extreme
+ * simplices. Checked: the point (tolerance relative to the simplex's
+ * coordinates), weights >= 0 summing to 1 and reproducing the point, the
+ * support mask = the non-zero weights and minimal, status, no NaN ever. */
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+#include "check_main.h"
+#include "reference.h"
+#include "testutil.h"
+
+/* Error allowed in the point, relative to the largest coordinate magnitude:
+ * a few hundred ulps covers the cancellation of any reasonable method. */
+#define POINT_TOL 1e-12
+
+static double max_abs_coord(const agjk_vec3 *w, int n) {
+    double m = 0.0;
+    for (int i = 0; i < n; i++) m = fmax(m, fmax(fabs(w[i].x), fmax(fabs(w[i].y), fabs(w[i].z))));
+    return m;
+}
+
+static int popcount4(uint32_t m) {
+    int c = 0;
+    for (int i = 0; i < 4; i++) c += (m >> i) & 1u;
+    return c;
+}
+
+static double worst_rel_error; /* reported at the end of random_simplices */
+/* When set, point and weight-reconstruction errors are counted in
+ * soft_failures (with the worst case kept) instead of stopping the test, so
+ * that one run reports how often and how badly the library misses. */
+static int soft_mode, soft_failures, soft_worst_case;
+static double soft_worst;
+
+static void point_failure(int ok, double err_rel, int i) {
+    if (ok) return;
+    soft_failures++;
+    if (err_rel > soft_worst) {
+        soft_worst = err_rel;
+        soft_worst_case = i;
+    }
+}
+
+/* Checks everything that does not depend on the minimality of the mask;
+ * returns the agjk projection in *pj. */
+static void check_projection(const agjk_vec3 *w, int n, const char *what, int i,
+                             agjk_simplex_projection *pj, ref_projection *ref) {
+    memset(pj, 0xff, sizeof *pj); /* NaN-ish garbage: every field must be written */
+    agjk_status st = agjk_simplex_project_origin(w, n, pj);
+    ck_assert_int_eq(ref_project_origin(w, n, ref), 0);
+    double size = max_abs_coord(w, n);
+    double tol = POINT_TOL * size;
+    ck_assert_msg(tu_vec_finite(pj->point), "%s %d: non-finite point", what, i);
+    ck_assert_msg(st == AGJK_STATUS_SEPARATED || st == AGJK_STATUS_INTERSECTING,
+                  "%s %d: status %d", what, i, (int)st);
+    double ex = pj->point.x - (double)ref->point[0], ey = pj->point.y - (double)ref->point[1];
+    double ez = pj->point.z - (double)ref->point[2];
+    double err = sqrt(ex * ex + ey * ey + ez * ez);
+    if (size > 0 && err / size > worst_rel_error) worst_rel_error = err / size;
+    if (soft_mode)
+        point_failure(err <= tol, size > 0 ? err / size : err, i);
+    else
+        ck_assert_msg(err <= tol, "%s %d (n=%d): point (%.17g %.17g %.17g) vs reference "
+                  "(%.17Lg %.17Lg %.17Lg), error %g > %g", what, i, n, pj->point.x, pj->point.y,
+                  pj->point.z, ref->point[0], ref->point[1], ref->point[2], err, tol);
+    double sum = 0.0;
+    agjk_vec3 rec = tu_vec(0, 0, 0);
+    for (int k = 0; k < 4; k++) {
+        ck_assert_msg(isfinite(pj->weights[k]), "%s %d: weight %d not finite", what, i, k);
+        ck_assert_msg(pj->weights[k] >= 0.0, "%s %d: weight %d = %g < 0", what, i, k,
+                      pj->weights[k]);
+        if (k >= n) {
+            ck_assert_msg(pj->weights[k] == 0.0, "%s %d: weight of absent vertex %d", what, i, k);
+            continue;
+        }
+        int in_mask = (pj->support_mask >> k) & 1u;
+        ck_assert_msg(in_mask == (pj->weights[k] != 0.0),
+                      "%s %d: mask 0x%x disagrees with weight %d = %g", what, i,
+                      (unsigned)pj->support_mask, k, pj->weights[k]);
+        sum += pj->weights[k];
+        rec = tu_add(rec, tu_scale(w[k], pj->weights[k]));
+    }
+    ck_assert_msg((pj->support_mask & ~((1u << n) - 1u)) == 0, "%s %d: mask beyond count", what, i);
+    ck_assert_msg(fabs(sum - 1.0) <= 1e-12, "%s %d: weights sum to %.17g", what, i, sum);
+    double rec_err = tu_norm(tu_sub(rec, pj->point));
+    if (soft_mode)
+        point_failure(rec_err <= tol + 1e-12 * size, size > 0 ? rec_err / size : rec_err, i);
+    else
+        ck_assert_msg(rec_err <= tol + 1e-12 * size,
+                  "%s %d: weights do not reproduce the point: |sum w_i v_i - point| = %g "
+                  "(max |coord| %g)", what, i, rec_err, size);
+    ck_assert_int_eq(pj->support_count, popcount4(pj->support_mask));
+    ck_assert(pj->support_count >= 1 && pj->support_count <= n);
+    /* The status says whether the origin is in the simplex. */
+    if (soft_mode)
+        point_failure(!(ref->distance > (long double)tol) || st == AGJK_STATUS_SEPARATED,
+                      (double)ref->distance / size, i);
+    else if (ref->distance > (long double)tol)
+        ck_assert_msg(st == AGJK_STATUS_SEPARATED, "%s %d: origin outside, status %d", what, i,
+                      (int)st);
+}
+
+/* True when the reference's winning face is decided clearly: every vertex of
+ * it carries weight > margin (not almost on a smaller face). Then the
+ * library's support set must be the same face. */
+static int clearly_minimal(const ref_projection *r, long double margin) {
+    for (int k = 0; k < 4; k++)
+        if ((r->mask >> k) & 1u)
+            if (r->weights[k] <= margin) return 0;
+    return 1;
+}
+
+START_TEST(random_simplices) {
+    tu_rng rng;
+    tu_rng_seed(&rng, 11);
+    int compared = 0, inside = 0;
+    for (int i = 0; i < 20000; i++) {
+        int n = 1 + (int)tu_uniform_int(&rng, 4);
+        double size = tu_log_uniform(&rng, -3, 3);
+        /* centre near the origin half the time, so that projections land on
+         * faces, edges, vertices and (for n = 4) inside */
+        double off = (i % 2) ? tu_uniform_range(&rng, 0.0, 0.5) : tu_uniform_range(&rng, 0.5, 3.0);
+        agjk_vec3 c = tu_scale(tu_unit_vector(&rng), size * off);
+        agjk_vec3 w[4];
+        for (int k = 0; k < n; k++) w[k] = tu_add(c, tu_scale(tu_unit_vector(&rng), size));
+        agjk_simplex_projection pj;
+        ref_projection ref;
+        check_projection(w, n, "random", i, &pj, &ref);
+        if (clearly_minimal(&ref, 1e-6L)) {
+            compared++;
+            ck_assert_msg(pj.support_mask == ref.mask, "random %d (n=%d): mask 0x%x, reference 0x%x",
+                          i, n, (unsigned)pj.support_mask, ref.mask);
+        }
+        if (ref.count == 4 && clearly_minimal(&ref, 1e-6L)) {
+            inside++;
+            ck_assert_int_eq(agjk_simplex_project_origin(w, n, &pj), AGJK_STATUS_INTERSECTING);
+            ck_assert_int_eq(pj.support_count, 4);
+        }
+    }
+    ck_assert(compared > 15000);
+    ck_assert(inside > 100);
+    printf("random_simplices: worst point error %.3g x max|coord|, %d masks compared, %d inside\n",
+           worst_rel_error, compared, inside);
+}
+END_TEST
+
+START_TEST(degenerate) {
+    tu_rng rng;
+    tu_rng_seed(&rng, 12);
+    for (int i = 0; i < 20000; i++) {
+        agjk_vec3 w[4];
+        int n = 2 + (int)tu_uniform_int(&rng, 3);
+        double size = tu_log_uniform(&rng, -2, 2);
+        agjk_vec3 c = tu_scale(tu_unit_vector(&rng), size * tu_uniform_range(&rng, 0.0, 2.0));
+        agjk_vec3 u = tu_unit_vector(&rng), v = tu_unit_vector(&rng);
+        int kind = i % 5;
+        for (int k = 0; k < n; k++) {
+            double a = tu_uniform_range(&rng, -size, size), b = tu_uniform_range(&rng, -size, size);
+            switch (kind) {
+            case 0: /* collinear */
+                w[k] = tu_add(c, tu_scale(u, a));
+                break;
+            case 1: /* coplanar */
+                w[k] = tu_add(c, tu_add(tu_scale(u, a), tu_scale(v, b)));
+                break;
+            case 2: /* repeated points */
+                w[k] = k == 0 ? tu_add(c, tu_scale(u, a)) : w[tu_uniform_int(&rng, (uint32_t)k)];
+                break;
+            case 3: /* all the same point */
+                w[k] = c;
+                break;
+            default: /* nearly collinear: one point 1e-9 off the line */
+                w[k] = tu_add(c, tu_scale(u, a));
+                if (k == n - 1) w[k] = tu_add(w[k], tu_scale(v, 1e-9 * size));
+                break;
+            }
+        }
+        agjk_simplex_projection pj;
+        ref_projection ref;
+        check_projection(w, n, "degenerate", i, &pj, &ref);
+    }
+    /* exactly collinear and coplanar with exact (integer) coordinates */
+    const agjk_vec3 line[3] = {{0, 0, 1}, {1, 1, 1}, {2, 2, 1}};
+    const agjk_vec3 plane[4] = {{-1, -1, 2}, {3, -1, 2}, {-1, 3, 2}, {1, 1, 2}};
+    agjk_simplex_projection pj;
+    ref_projection ref;
+    check_projection(line, 3, "exact line", 0, &pj, &ref);
+    ck_assert(fabs(pj.point.x) + fabs(pj.point.y) < 1e-15 && fabs(pj.point.z - 1.0) < 1e-15);
+    check_projection(plane, 4, "exact plane", 0, &pj, &ref);
+    ck_assert(fabs(pj.point.x) + fabs(pj.point.y) < 1e-15 && fabs(pj.point.z - 2.0) < 1e-15);
+}
+END_TEST
+
+START_TEST(huge_ranges) {
+    /* Coordinates from 1e-9 to 1e9 in one simplex: never NaN, weights valid,
+     * point within POINT_TOL of the largest coordinate.
+     * KNOWN FAILURE (reported to the lead, 2026-11-21): the library's point
+     * can be far from the true projection (e.g. 8535 units off with
+     * coordinates up to 5e7, case 69 of seed 13) although its weights are
+     * nearly right, and elsewhere its weights do not reproduce its point
+     * (case 64). Kept at full strength on purpose. */
+    tu_rng rng;
+    tu_rng_seed(&rng, 13);
+    worst_rel_error = 0.0;
+    soft_mode = 1;
+    soft_failures = 0;
+    soft_worst = 0.0;
+    for (int i = 0; i < 20000; i++) {
+        int n = 1 + (int)tu_uniform_int(&rng, 4);
+        agjk_vec3 w[4];
+        for (int k = 0; k < n; k++)
+            w[k] = tu_scale(tu_unit_vector(&rng), tu_log_uniform(&rng, -9, 9));
+        agjk_simplex_projection pj;
+        ref_projection ref;
+        check_projection(w, n, "huge", i, &pj, &ref);
+    }
+    soft_mode = 0;
+    printf("huge_ranges: worst point error %.3g x max|coord|\n", worst_rel_error);
+    ck_assert_msg(soft_failures == 0,
+                  "huge_ranges: %d of 20000 simplices with point or weights off (or the origin "
+                  "called inside while outside) by more than %g x max|coord|; worst %.3g x max|coord| (case %d)",
+                  soft_failures, POINT_TOL, soft_worst, soft_worst_case);
+}
+END_TEST
+
+START_TEST(origin_on_features) {
+    /* The origin exactly on a vertex, an edge, a face, or inside: distance
+     * 0, status INTERSECTING, and the smallest face holding it. Coordinates
+     * are small integers so "exactly" is exact. */
+    tu_rng rng;
+    tu_rng_seed(&rng, 14);
+    for (int i = 0; i < 4000; i++) {
+        agjk_vec3 w[4];
+        int feature = i % 4; /* 0 vertex, 1 edge, 2 face, 3 inside */
+        /* random integer points in [-8, 8]^3, then shift so that the chosen
+         * combination is exactly the origin */
+        for (int k = 0; k < 4; k++)
+            w[k] = tu_vec((double)tu_uniform_int(&rng, 17) - 8, (double)tu_uniform_int(&rng, 17) - 8,
+                          (double)tu_uniform_int(&rng, 17) - 8);
+        agjk_vec3 o;
+        int expect = feature + 1;
+        switch (feature) {
+        case 0: o = w[0]; break;
+        case 1: o = tu_scale(tu_add(w[0], w[1]), 0.5); break;
+        case 2: o = tu_scale(tu_add(tu_add(w[0], w[1]), tu_scale(w[2], 2.0)), 0.25); break;
+        default: o = tu_scale(tu_add(tu_add(w[0], w[1]), tu_add(w[2], w[3])), 0.25); break;
+        }
+        for (int k = 0; k < 4; k++) w[k] = tu_sub(w[k], o);
+        ref_projection ref;
+        ref_project_origin(w, 4, &ref);
+        if (ref.count != expect) continue; /* degenerate draw (e.g. repeated points) */
+        /* a random order of the vertices, and fewer vertices when the feature allows */
+        int n = expect + (int)tu_uniform_int(&rng, (uint32_t)(5 - expect));
+        agjk_simplex_projection pj;
+        check_projection(w, n, "feature", i, &pj, &ref);
+        ck_assert_msg(tu_norm(pj.point) == 0.0, "feature %d: origin on the simplex, point %g", i,
+                      tu_norm(pj.point));
+        ck_assert_int_eq(agjk_simplex_project_origin(w, n, &pj), AGJK_STATUS_INTERSECTING);
+        if (clearly_minimal(&ref, 1e-9L))
+            ck_assert_msg(pj.support_count == ref.count, "feature %d (%d): count %d, expected %d", i,
+                          feature, pj.support_count, ref.count);
+    }
+}
+END_TEST
+
+START_TEST(invalid_input) {
+    agjk_vec3 w[5] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 1, 1}, {2, 2, 2}};
+    agjk_simplex_projection pj;
+    ck_assert_int_eq(agjk_simplex_project_origin(NULL, 2, &pj), AGJK_STATUS_INVALID_INPUT);
+    ck_assert_int_eq(agjk_simplex_project_origin(w, 2, NULL), AGJK_STATUS_INVALID_INPUT);
+    ck_assert_int_eq(agjk_simplex_project_origin(w, 0, &pj), AGJK_STATUS_INVALID_INPUT);
+    ck_assert_int_eq(agjk_simplex_project_origin(w, -1, &pj), AGJK_STATUS_INVALID_INPUT);
+    ck_assert_int_eq(agjk_simplex_project_origin(w, 5, &pj), AGJK_STATUS_INVALID_INPUT);
+    const double bad[3] = {NAN, INFINITY, -INFINITY};
+    for (int b = 0; b < 3; b++)
+        for (int k = 0; k < 4; k++)
+            for (int c = 0; c < 3; c++) {
+                agjk_vec3 v[4] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 1, 1}};
+                double *comp = c == 0 ? &v[k].x : c == 1 ? &v[k].y : &v[k].z;
+                *comp = bad[b];
+                ck_assert_int_eq(agjk_simplex_project_origin(v, 4, &pj), AGJK_STATUS_INVALID_INPUT);
+            }
+}
+END_TEST
+
+int main(void) {
+    Suite *s = suite_create("simplex");
+    TU_ADD(s, random_simplices);
+    TU_ADD(s, degenerate);
+    TU_ADD(s, huge_ranges);
+    TU_ADD(s, origin_on_features);
+    TU_ADD(s, invalid_input);
+    return tu_run_suite(s);
+}
