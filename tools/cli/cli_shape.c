@@ -1,0 +1,41 @@
+/* SPDX-License-Identifier: MIT */
+/* A mesh file as an agjk shape: load (assimp), scale, hull (Qhull), and the
+ * polytope support over the hull vertices, with the hill-climbing adjacency
+ * for solid hulls. The scale multiplies local coordinates before the pose, in
+ * double, so --scale-a 1000 turns a file in metres into millimetres exactly
+ * as a caller would. */
+#include "cli.h"
+
+#include <string.h>
+
+int cli_shape_load(const char *path, double scale, int with_adjacency, cli_shape *s) {
+    char err[MESH_ERROR_SIZE];
+    memset(s, 0, sizeof *s);
+    if (!mesh_load(path, &s->points, err, sizeof err)) {
+        cli_error("%s", err);
+        return 0;
+    }
+    for (size_t i = 0; scale != 1.0 && i < s->points.count; i++) {
+        s->points.points[i].x *= scale;
+        s->points.points[i].y *= scale;
+        s->points.points[i].z *= scale;
+    }
+    if (!mesh_hull_build(s->points.points, s->points.count, with_adjacency, &s->hull, err,
+                         sizeof err)) {
+        cli_error("%s: convex hull: %s", path, err);
+        mesh_points_free(&s->points);
+        return 0;
+    }
+    if (agjk_shape_polytope(&s->shape, &s->hull.polytope) != AGJK_STATUS_OK) {
+        /* Cannot happen for finite points and our adjacency: a bug, say so. */
+        cli_error("%s: the library rejected the hull as a polytope (internal error)", path);
+        cli_shape_free(s);
+        return 0;
+    }
+    return 1;
+}
+
+void cli_shape_free(cli_shape *s) {
+    mesh_hull_free(&s->hull);
+    mesh_points_free(&s->points);
+}

@@ -1,0 +1,268 @@
+/* SPDX-License-Identifier: MIT */
+/* Convex hull of a point set with Qhull's reentrant library (libqhull_r).
+ *
+ * Options: "Qt" triangulates the output (we need triangles for the vertex
+ * graph; triangulating a merged non-triangular facet adds diagonals, harmless
+ * for hill climbing). Qhull's default facet merging (C-0) absorbs duplicates
+ * and nearly coplanar points, so every hull vertex it reports is extreme to
+ * within rounding.
+ *
+ * Degenerate inputs (all points on one plane or line, or one point) have no
+ * 3-D hull. We detect them before calling Qhull, from the affine dimension
+ * of the set, and keep the distinct points as the shape: the support
+ * function of a point set (a scan) is the support function of its hull, so
+ * queries stay exact; only hill climbing is unavailable. */
+#include "mesh.h"
+
+#include <libqhull_r/qhull_ra.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdlib.h>
+#include <string.h>
+
+static void set_error(char *err, size_t err_size, const char *fmt, ...) {
+    va_list ap;
+    if (!err || err_size == 0) return;
+    va_start(ap, fmt);
+    vsnprintf(err, err_size, fmt, ap);
+    va_end(ap);
+}
+
+static agjk_vec3 sub(agjk_vec3 a, agjk_vec3 b) {
+    agjk_vec3 r = {a.x - b.x, a.y - b.y, a.z - b.z};
+    return r;
+}
+static double dot(agjk_vec3 a, agjk_vec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+static agjk_vec3 cross(agjk_vec3 a, agjk_vec3 b) {
+    agjk_vec3 r = {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+    return r;
+}
+
+/* Index of the point maximising f(point); ties keep the first. */
+static size_t farthest(const agjk_vec3 *p, size_t n, double (*f)(agjk_vec3, const agjk_vec3 *),
+                       const agjk_vec3 *ctx, double *best_value) {
+    size_t best = 0;
+    *best_value = -1.0;
+    for (size_t i = 0; i < n; i++) {
+        double v = f(p[i], ctx);
+        if (v > *best_value) {
+            *best_value = v;
+            best = i;
+        }
+    }
+    return best;
+}
+
+/* ctx[0] = origin point; ctx[1] = line direction (unit); ctx[2] = plane normal (unit). */
+static double dist_point(agjk_vec3 q, const agjk_vec3 *ctx) {
+    agjk_vec3 d = sub(q, ctx[0]);
+    return dot(d, d);
+}
+static double dist_line(agjk_vec3 q, const agjk_vec3 *ctx) {
+    agjk_vec3 c = cross(sub(q, ctx[0]), ctx[1]);
+    return dot(c, c);
+}
+static double dist_plane(agjk_vec3 q, const agjk_vec3 *ctx) {
+    return fabs(dot(sub(q, ctx[0]), ctx[2]));
+}
+
+static agjk_vec3 unit(agjk_vec3 v) {
+    double n = sqrt(dot(v, v));
+    agjk_vec3 r = {v.x / n, v.y / n, v.z / n};
+    return r;
+}
+
+/* Affine dimension of the set, with a tolerance relative to its extent
+ * (1e-12: far above double rounding of the coordinates, far below any
+ * thickness a real part has). */
+static int affine_dimension(const agjk_vec3 *p, size_t n) {
+    agjk_vec3 ctx[3];
+    double d0, d1, d2;
+    ctx[0] = p[0];
+    size_t a = farthest(p, n, dist_point, ctx, &d0);
+    double extent = sqrt(d0);
+    double tol = 1e-12 * extent;
+    if (extent == 0.0) return 0;
+    ctx[1] = unit(sub(p[a], p[0]));
+    size_t b = farthest(p, n, dist_line, ctx, &d1);
+    if (sqrt(d1) <= tol) return 1;
+    ctx[2] = unit(cross(ctx[1], sub(p[b], p[0])));
+    farthest(p, n, dist_plane, ctx, &d2);
+    return d2 <= tol ? 2 : 3;
+}
+
+static int vec_cmp(const void *pa, const void *pb) {
+    const agjk_vec3 *a = pa, *b = pb;
+    if (a->x != b->x) return a->x < b->x ? -1 : 1;
+    if (a->y != b->y) return a->y < b->y ? -1 : 1;
+    if (a->z != b->z) return a->z < b->z ? -1 : 1;
+    return 0;
+}
+
+/* Degenerate set: keep the distinct points, sorted. */
+static int keep_points(const agjk_vec3 *points, size_t count, mesh_hull *hull) {
+    agjk_vec3 *v = malloc(count * sizeof *v);
+    if (!v) return 0;
+    memcpy(v, points, count * sizeof *v);
+    qsort(v, count, sizeof *v, vec_cmp);
+    size_t n = 0;
+    for (size_t i = 0; i < count; i++)
+        if (n == 0 || vec_cmp(&v[n - 1], &v[i]) != 0) v[n++] = v[i];
+    hull->vertices = v;
+    hull->vertex_count = (int32_t)n;
+    return 1;
+}
+
+/* Copies Qhull's vertices (renumbered 0..n-1) and triangles, each oriented
+ * so that its normal agrees with the facet's outward normal. */
+static int extract_hull(qhT *qh, mesh_hull *hull) {
+    vertexT *vertex, **vertexp;
+    facetT *facet;
+    int32_t *map = malloc((size_t)qh->num_points * sizeof *map);
+    hull->vertices = malloc((size_t)qh->num_vertices * sizeof *hull->vertices);
+    hull->triangles = malloc((size_t)qh->num_facets * 3 * sizeof *hull->triangles);
+    if (!map || !hull->vertices || !hull->triangles) {
+        free(map);
+        return 0;
+    }
+    int32_t nv = 0, nt = 0;
+    FORALLvertices {
+        int id = qh_pointid(qh, vertex->point);
+        map[id] = nv;
+        agjk_vec3 v = {vertex->point[0], vertex->point[1], vertex->point[2]};
+        hull->vertices[nv++] = v;
+    }
+    FORALLfacets {
+        int32_t tri[3], k = 0;
+        if (qh_setsize(qh, facet->vertices) != 3) continue; /* Qt: all are triangles */
+        FOREACHvertex_(facet->vertices) tri[k++] = map[qh_pointid(qh, vertex->point)];
+        agjk_vec3 a = hull->vertices[tri[0]], b = hull->vertices[tri[1]], c = hull->vertices[tri[2]];
+        agjk_vec3 n = cross(sub(b, a), sub(c, a));
+        agjk_vec3 outward = {facet->normal[0], facet->normal[1], facet->normal[2]};
+        if (dot(n, outward) < 0) {
+            int32_t t = tri[1];
+            tri[1] = tri[2];
+            tri[2] = t;
+        }
+        memcpy(hull->triangles + 3 * (size_t)nt++, tri, sizeof tri);
+    }
+    free(map);
+    hull->vertex_count = nv;
+    hull->triangle_count = nt;
+    return 1;
+}
+
+/* Runs Qhull; Qhull's messages go to a memory stream we discard unless it fails. */
+static int run_qhull(const agjk_vec3 *points, size_t count, mesh_hull *hull, char *err,
+                     size_t err_size) {
+    coordT *coords = malloc(count * 3 * sizeof *coords);
+    if (!coords) {
+        set_error(err, err_size, "out of memory");
+        return 0;
+    }
+    for (size_t i = 0; i < count; i++) {
+        coords[3 * i] = points[i].x;
+        coords[3 * i + 1] = points[i].y;
+        coords[3 * i + 2] = points[i].z;
+    }
+    char *log = NULL;
+    size_t log_size = 0;
+    FILE *errfile = open_memstream(&log, &log_size);
+    qhT qh_storage, *qh = &qh_storage;
+    char options[] = "qhull Qt";
+    QHULL_LIB_CHECK
+    qh_zero(qh, errfile);
+    int exitcode = qh_new_qhull(qh, 3, (int)count, coords, False, options, NULL, errfile);
+    int ok = exitcode == 0 && extract_hull(qh, hull);
+    if (errfile) fclose(errfile);
+    if (!ok) {
+        const char *why = (log && *log) ? log : "unknown error";
+        size_t len = strcspn(why, "\n");
+        set_error(err, err_size, "Qhull failed (exit code %d): %.*s", exitcode, (int)len, why);
+    }
+    free(log);
+    int curlong, totlong;
+    qh_freeqhull(qh, !qh_ALL);
+    qh_memfreeshort(qh, &curlong, &totlong);
+    free(coords);
+    return ok;
+}
+
+int mesh_hull_build(const agjk_vec3 *points, size_t count, int with_adjacency, mesh_hull *hull,
+                    char *err, size_t err_size) {
+    memset(hull, 0, sizeof *hull);
+    if (count < 1 || count > (size_t)AGJK_POLYTOPE_MAX_VERTICES) {
+        set_error(err, err_size, "point count %zu out of range 1..%d", count,
+                  AGJK_POLYTOPE_MAX_VERTICES);
+        return 0;
+    }
+    hull->bbox_min = hull->bbox_max = points[0];
+    for (size_t i = 1; i < count; i++) {
+        const agjk_vec3 *p = &points[i];
+        hull->bbox_min.x = fmin(hull->bbox_min.x, p->x);
+        hull->bbox_min.y = fmin(hull->bbox_min.y, p->y);
+        hull->bbox_min.z = fmin(hull->bbox_min.z, p->z);
+        hull->bbox_max.x = fmax(hull->bbox_max.x, p->x);
+        hull->bbox_max.y = fmax(hull->bbox_max.y, p->y);
+        hull->bbox_max.z = fmax(hull->bbox_max.z, p->z);
+    }
+    hull->dimension = affine_dimension(points, count);
+    int ok = hull->dimension == 3 && run_qhull(points, count, hull, err, err_size);
+    if (!ok && hull->dimension == 3) {
+        /* Thinner than Qhull accepts though thicker than our test: keep the points. */
+        free(hull->vertices);
+        free(hull->triangles);
+        hull->vertices = NULL;
+        hull->triangles = NULL;
+        hull->vertex_count = hull->triangle_count = 0;
+        hull->qhull_failed = 1;
+    }
+    if (!ok) ok = keep_points(points, count, hull);
+    if (!ok) set_error(err, err_size, "out of memory");
+    if (ok) {
+        hull->polytope.vertices = hull->vertices;
+        hull->polytope.vertex_count = hull->vertex_count;
+    }
+    if (ok && with_adjacency && hull->triangle_count > 0 &&
+        agjk_polytope_build_adjacency(&hull->polytope, hull->triangles, hull->triangle_count) !=
+            AGJK_STATUS_OK) {
+        set_error(err, err_size, "cannot build the hull's vertex adjacency");
+        ok = 0;
+    }
+    if (!ok) mesh_hull_free(hull);
+    return ok;
+}
+
+void mesh_hull_free(mesh_hull *hull) {
+    if (!hull) return;
+    agjk_polytope_free_adjacency(&hull->polytope);
+    free(hull->vertices);
+    free(hull->triangles);
+    memset(hull, 0, sizeof *hull);
+}
+
+const char *mesh_hull_kind(const mesh_hull *hull) {
+    if (hull->qhull_failed) return "nearly flat (Qhull found no solid hull)";
+    switch (hull->dimension) {
+    case 3: return "solid";
+    case 2: return "flat (coplanar)";
+    case 1: return "collinear";
+    default: return "single point";
+    }
+}
+
+int mesh_hull_write_off(const mesh_hull *hull, FILE *out) {
+    /* %.17g round-trips every double exactly. */
+    if (fprintf(out, "OFF\n# convex hull (%s) written by agjk\n%d %d 0\n", mesh_hull_kind(hull),
+                (int)hull->vertex_count, (int)hull->triangle_count) < 0)
+        return 0;
+    for (int32_t i = 0; i < hull->vertex_count; i++) {
+        const agjk_vec3 *v = &hull->vertices[i];
+        if (fprintf(out, "%.17g %.17g %.17g\n", v->x, v->y, v->z) < 0) return 0;
+    }
+    for (int32_t t = 0; t < hull->triangle_count; t++) {
+        const int32_t *tri = hull->triangles + 3 * (size_t)t;
+        if (fprintf(out, "3 %d %d %d\n", (int)tri[0], (int)tri[1], (int)tri[2]) < 0) return 0;
+    }
+    return fflush(out) == 0 && !ferror(out);
+}

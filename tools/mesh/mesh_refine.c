@@ -1,0 +1,217 @@
+/* SPDX-License-Identifier: MIT */
+/* Double-precision coordinates for OFF and OBJ files.
+ *
+ * assimp (as packaged) stores positions as float: a coordinate of 100 loses
+ * about 4e-6, which for parts 0.01 apart is a 4e-4 relative distance error
+ * that no solver tolerance can recover. OFF and OBJ are plain text, so we
+ * re-read their vertex records with strtod (correctly rounded) and put the
+ * doubles back in place of assimp's floats.
+ *
+ * assimp stays the authority on what the file means (which vertices, which
+ * meshes, whether it parses at all); we only upgrade precision: each float
+ * point of assimp is looked up among the file's vertices rounded to float
+ * (exactly, or within one float ulp per coordinate, since assimp's fast_atof
+ * is not always correctly rounded). If any point finds no match, or the
+ * file's layout is beyond this small reader, nothing is changed.
+ * Several file vertices may round to the same float point: all of them are
+ * kept, so the point set is a superset of assimp's, never missing a vertex. */
+#include "mesh.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* A file vertex: its double coordinates and their float rounding. */
+typedef struct fvert {
+    float key[3];
+    agjk_vec3 p;
+} fvert;
+
+typedef struct fvert_list {
+    fvert *v;
+    size_t count, capacity;
+    long nonfinite; /* index of the first non-finite vertex, or -1 */
+} fvert_list;
+
+static int list_push(fvert_list *l, const double c[3]) {
+    if (l->count == l->capacity) {
+        size_t cap = l->capacity ? 2 * l->capacity : 1024;
+        fvert *n = realloc(l->v, cap * sizeof *n);
+        if (!n) return 0;
+        l->v = n;
+        l->capacity = cap;
+    }
+    if ((!isfinite(c[0]) || !isfinite(c[1]) || !isfinite(c[2])) && l->nonfinite < 0)
+        l->nonfinite = (long)l->count;
+    fvert *f = &l->v[l->count++];
+    f->p.x = c[0];
+    f->p.y = c[1];
+    f->p.z = c[2];
+    for (int k = 0; k < 3; k++) f->key[k] = (float)c[k];
+    return 1;
+}
+
+/* Reads up to three numbers from `s`; returns how many were read. */
+static int read3(const char *s, double c[3]) {
+    int n = 0;
+    char *end;
+    while (n < 3) {
+        double v = strtod(s, &end);
+        if (end == s) break;
+        c[n++] = v;
+        s = end;
+    }
+    return n;
+}
+
+/* Skips blanks; returns NULL for an empty or comment-only line. */
+static const char *content(const char *line) {
+    while (*line == ' ' || *line == '\t' || *line == '\r') line++;
+    return (*line == '\0' || *line == '\n' || *line == '#') ? NULL : line;
+}
+
+/* OBJ: every "v x y z [w | r g b]" line, in order. */
+static int read_obj(FILE *f, fvert_list *l) {
+    char line[4096];
+    while (fgets(line, sizeof line, f)) {
+        if (!strchr(line, '\n') && !feof(f)) return 0; /* over-long line: give up */
+        const char *s = content(line);
+        if (!s || s[0] != 'v' || (s[1] != ' ' && s[1] != '\t')) continue;
+        double c[3];
+        if (read3(s + 1, c) != 3 || !list_push(l, c)) return 0;
+    }
+    return 1;
+}
+
+/* OFF header: "[ST][C][N]OFF" keyword, then the counts on the same line or
+ * the next content line. Returns the number of counts read (0: not OFF). */
+static int read_off_header(FILE *f, double counts[3]) {
+    char line[4096];
+    const char *s = NULL;
+    while (fgets(line, sizeof line, f) && !(s = content(line))) {}
+    if (!s) return 0;
+    size_t klen = strspn(s, "STCNOF");
+    if (klen < 3 || strncmp(s + klen - 3, "OFF", 3) != 0) return 0;
+    int n = read3(s + klen, counts);
+    while (n == 0 && fgets(line, sizeof line, f)) {
+        s = content(line);
+        if (s) n = read3(s, counts);
+    }
+    return n;
+}
+
+/* OFF: header, then one vertex per line, x y z first. Other variants (4OFF,
+ * nOFF) are declined. */
+static int read_off(FILE *f, fvert_list *l) {
+    char line[4096];
+    const char *s;
+    double counts[3];
+    if (read_off_header(f, counts) < 1 || !(counts[0] >= 0 && counts[0] <= 1e9)) return 0;
+    size_t nv = (size_t)counts[0];
+    while (l->count < nv && fgets(line, sizeof line, f)) {
+        if (!(s = content(line))) continue;
+        double c[3];
+        if (read3(s, c) != 3 || !list_push(l, c)) return 0;
+    }
+    return l->count == nv;
+}
+
+int mesh_off_counts_plausible(const char *path, long file_size) {
+    FILE *f = fopen(path, "r");
+    if (!f) return 1;
+    double counts[3] = {0, 0, 0};
+    int n = read_off_header(f, counts);
+    fclose(f);
+    if (n < 1) return 1; /* not an OFF header we know: assimp will judge */
+    /* A vertex record takes at least 6 bytes ("0 0 0\n"), a face 2 ("0\n"). */
+    double need = 6.0 * counts[0] + (n >= 2 ? 2.0 * counts[1] : 0.0);
+    return counts[0] >= 0 && (n < 2 || counts[1] >= 0) && need <= (double)file_size;
+}
+
+/* Order of float triples, exact (total for finite keys). */
+static int key_cmp(const float a[3], const float b[3]) {
+    for (int k = 0; k < 3; k++) {
+        if (a[k] < b[k]) return -1;
+        if (a[k] > b[k]) return 1;
+    }
+    return 0;
+}
+
+static int fvert_cmp(const void *a, const void *b) {
+    return key_cmp(((const fvert *)a)->key, ((const fvert *)b)->key);
+}
+
+/* First index of `key` in the sorted list, or -1. */
+static long find_key(const fvert_list *l, const float key[3]) {
+    size_t lo = 0, hi = l->count;
+    while (lo < hi) {
+        size_t mid = lo + (hi - lo) / 2;
+        if (key_cmp(l->v[mid].key, key) < 0) lo = mid + 1;
+        else hi = mid;
+    }
+    return (lo < l->count && key_cmp(l->v[lo].key, key) == 0) ? (long)lo : -1;
+}
+
+/* Exact match first, then the 26 neighbours one float ulp away. */
+static long find_near(const fvert_list *l, const agjk_vec3 *p) {
+    const float base[3] = {(float)p->x, (float)p->y, (float)p->z};
+    long hit = find_key(l, base);
+    for (int m = 0; hit < 0 && m < 27; m++) {
+        float key[3];
+        int step[3] = {m % 3 - 1, (m / 3) % 3 - 1, m / 9 - 1};
+        for (int k = 0; k < 3; k++)
+            key[k] = step[k] == 0 ? base[k]
+                                  : nextafterf(base[k], step[k] > 0 ? INFINITY : -INFINITY);
+        hit = find_key(l, key);
+    }
+    return hit;
+}
+
+/* Replaces every point by its double-precision file vertex (or vertices). */
+static int substitute(const fvert_list *l, mesh_points *points) {
+    unsigned char *used = calloc(l->count ? l->count : 1, 1);
+    agjk_vec3 *out = malloc((l->count ? l->count : 1) * sizeof *out);
+    size_t n = 0;
+    int ok = used && out;
+    for (size_t i = 0; ok && i < points->count; i++) {
+        long h = find_near(l, &points->points[i]);
+        if (h < 0) ok = 0;
+        /* Take the whole run of file vertices with this float key once. */
+        for (size_t j = (size_t)h; ok && j < l->count && !used[j] &&
+                                   key_cmp(l->v[j].key, l->v[h].key) == 0; j++) {
+            used[j] = 1;
+            out[n++] = l->v[j].p;
+        }
+    }
+    free(used);
+    if (!ok) {
+        free(out);
+        return 0;
+    }
+    free(points->points);
+    points->points = out;
+    points->count = n;
+    return 1;
+}
+
+int mesh_refine_double(const char *path, const char *format, mesh_points *points,
+                       long *nonfinite_vertex) {
+    int is_obj = strcmp(format, "obj") == 0, is_off = strcmp(format, "off") == 0;
+    *nonfinite_vertex = -1;
+    if (!is_obj && !is_off) return 0;
+    FILE *f = fopen(path, "r");
+    if (!f) return 0;
+    fvert_list l = {NULL, 0, 0, -1};
+    int ok = is_obj ? read_obj(f, &l) : read_off(f, &l);
+    fclose(f);
+    if (l.nonfinite >= 0) {
+        *nonfinite_vertex = l.nonfinite;
+        ok = -1;
+    } else if (ok) {
+        qsort(l.v, l.count, sizeof *l.v, fvert_cmp);
+        ok = substitute(&l, points);
+        points->double_precision = ok;
+    }
+    free(l.v);
+    return ok;
+}
