@@ -1,0 +1,74 @@
+# tests/stability: the stiff/extreme corpus, scale invariance, the bad-input
+# matrix, thread safety (issue 5), and the sanitizer / valgrind variants of
+# `make check`.
+#
+#   make check-stability   only these test programs
+#   make check-asan        all of `make check` rebuilt with ASan + UBSan in $(OUT)/asan
+#   make check-tsan        the thread and stability tests under ThreadSanitizer in $(OUT)/tsan
+#   make check-valgrind    every test program of `make check` under valgrind memcheck
+
+STAB_OUT := $(OUT)/tests/stability
+STAB_TESTS := $(basename $(notdir $(wildcard tests/stability/test_*.c)))
+STAB_BINS := $(STAB_TESTS:%=$(STAB_OUT)/%)
+STAB_CPPFLAGS := -Itests/common -Itests/stability
+STAB_CHECK_CFLAGS := $(shell $(PKG_CONFIG) --cflags check 2>/dev/null)
+STAB_CHECK_LIBS := $(shell $(PKG_CONFIG) --libs check 2>/dev/null)
+
+# The certified reference of tests/common: helper A's library when its
+# fragment defines TEST_COMMON_LIB, else built here from the same sources.
+ifeq ($(strip $(TEST_COMMON_LIB)),)
+STAB_REF_SRCS := $(filter-out tests/common/test_%.c,$(wildcard tests/common/*.c))
+STAB_REF_OBJS := $(STAB_REF_SRCS:tests/common/%.c=$(STAB_OUT)/common/%.o)
+STAB_REF_LIB := $(STAB_OUT)/libstabref.a
+$(STAB_OUT)/common/%.o: tests/common/%.c $(wildcard tests/common/*.h) $(HEADERS)
+	@mkdir -p $(dir $@)
+	$(CC) $(ALL_CPPFLAGS) -Itests/common $(ALL_CFLAGS) -c $< -o $@
+$(STAB_REF_LIB): $(STAB_REF_OBJS)
+	@rm -f $@
+	$(AR) rcs $@ $^
+else
+STAB_REF_LIB := $(TEST_COMMON_LIB)
+endif
+
+CHECK_BINS += $(STAB_BINS)
+
+$(STAB_OUT)/%.o: tests/stability/%.c tests/stability/stab_util.h tests/common/reference.h $(HEADERS)
+	@mkdir -p $(dir $@)
+	$(CC) $(ALL_CPPFLAGS) $(STAB_CPPFLAGS) $(STAB_CHECK_CFLAGS) $(ALL_CFLAGS) -c $< -o $@
+
+$(STAB_BINS): $(STAB_OUT)/%: $(STAB_OUT)/%.o $(STAB_OUT)/stab_util.o $(STAB_REF_LIB) $(LIB_A)
+	$(CC) $(ALL_CFLAGS) -o $@ $^ $(LDFLAGS) $(STAB_CHECK_LIBS) -lpthread -lm
+
+.PHONY: check-stability check-asan check-tsan check-valgrind
+check-stability: $(STAB_BINS)
+	@fail=0; for t in $(STAB_BINS); do echo "== $$t"; ./$$t || { fail=1; echo "FAILED: $$t"; }; done; \
+	test $$fail -eq 0
+
+# Sanitizers: a separate OUT tree, so the normal build is untouched. gcc links
+# its sanitizer runtimes into shared objects too, which -Wl,-z,defs needs.
+SAN_FLAGS := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
+SAN_ENV := ASAN_OPTIONS=detect_leaks=1:abort_on_error=0:strict_string_checks=1 \
+           UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+check-asan:
+	$(SAN_ENV) $(MAKE) OUT=$(OUT)/asan OPT="-O1 -g $(SAN_FLAGS)" LDFLAGS="$(SAN_FLAGS)" check
+
+TSAN_FLAGS := -fsanitize=thread
+check-tsan:
+	$(MAKE) OUT=$(OUT)/tsan OPT="-O1 -g $(TSAN_FLAGS)" LDFLAGS="$(TSAN_FLAGS)" \
+	    $(OUT)/tsan/tests/stability/test_threads $(OUT)/tsan/tests/stability/test_bad_input
+	TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1 ./$(OUT)/tsan/tests/stability/test_threads
+	TSAN_OPTIONS=halt_on_error=1 ./$(OUT)/tsan/tests/stability/test_bad_input
+
+# Valgrind: every compiled test program of `make check` (not the scripts).
+# Check forks each test by default; CK_FORK=no keeps them in the traced
+# process. Note: valgrind runs x87 long double at double precision, so the
+# reference solver is less precise there (the tests' slack absorbs it).
+VALGRIND ?= valgrind
+VALGRIND_FLAGS := --error-exitcode=1 --leak-check=full --errors-for-leak-kinds=definite \
+                  --track-origins=yes -q
+check-valgrind:
+	$(MAKE) lib $(CHECK_BINS)
+	@pass=0; fail=0; for t in $(CHECK_BINS); do echo "== valgrind $$t"; \
+	    if CK_FORK=no STAB_QUICK=1 $(VALGRIND) $(VALGRIND_FLAGS) ./$$t >/dev/null; then pass=$$((pass+1)); \
+	    else fail=$$((fail+1)); echo "FAILED under valgrind: $$t"; fi; done; \
+	echo "valgrind: $$pass passed, $$fail failed"; test $$fail -eq 0
