@@ -1,0 +1,19 @@
+# tests/ccd: libccd comparison suite, correctness part (owner: helper C).
+# Shares the problem generator and the libccd adapter with tools/bench. This
+# fragment is read before tests/common and tools/bench, so the archives they
+# build are named literally (prerequisites expand when read).
+
+TEST_CCD_BIN := $(OUT)/tests/ccd/test_ccd
+
+$(TEST_CCD_BIN): tests/ccd/test_ccd.c $(OUT)/tools/bench/libbench.a \
+                 $(OUT)/tests/common/libtestcommon.a $(LIB_A) $(wildcard tools/bench/*.h)
+	@mkdir -p $(dir $@)
+	$(CC) $(ALL_CPPFLAGS) $(shell $(PKG_CONFIG) --cflags ccd) $(ALL_CFLAGS) $< -o $@ \
+	    $(OUT)/tools/bench/libbench.a $(OUT)/tests/common/libtestcommon.a $(LIB_A) \
+	    $(shell $(PKG_CONFIG) --libs ccd) -lm
+
+CHECK_BINS += $(TEST_CCD_BIN)
+
+.PHONY: check-ccd
+check-ccd: $(TEST_CCD_BIN)
+	./$(TEST_CCD_BIN)

@@ -1,0 +1,53 @@
+# tools/bench: agjk-bench, the benchmark of the paper's experiments, the
+# work-precision diagram and the libccd timing (owner: helper C).
+#
+#   make bench                 default size (~5 min on 2 cores), writes results/
+#   make bench-quick           a small run into $(OUT)/bench-quick/
+#   make bench BENCH_ARGS='--pairs 1000 --poses 100'   the paper's full size
+#   tools/fetch-meshes.sh      downloads the pybullet meshes; make bench then uses them
+
+BENCH_LIB_SRCS := rng.c problems.c nesmino.c solve.c evaluate.c stats.c guard.c \
+                  ccd_adapter.c ccd_bench.c mesh_io.c report.c
+BENCH_LIB_OBJS := $(BENCH_LIB_SRCS:%.c=$(OUT)/tools/bench/%.o)
+BENCH_LIB      := $(OUT)/tools/bench/libbench.a
+BENCH_BIN      := $(OUT)/tools/bench/agjk-bench
+BENCH_HDRS     := $(wildcard tools/bench/*.h)
+BENCH_CCD_CFLAGS := $(shell $(PKG_CONFIG) --cflags ccd)
+BENCH_CCD_LIBS   := $(shell $(PKG_CONFIG) --libs ccd)
+BENCH_MESH_DIR ?= $(OUT)/meshes/random_urdfs
+BENCH_ARGS     ?=
+BENCH_OUT      ?= results
+
+$(OUT)/tools/bench/%.o: tools/bench/%.c $(BENCH_HDRS) $(HEADERS) tests/common/reference.h
+	@mkdir -p $(dir $@)
+	$(CC) $(ALL_CPPFLAGS) $(BENCH_CCD_CFLAGS) $(ALL_CFLAGS) -c $< -o $@
+
+$(BENCH_LIB): $(BENCH_LIB_OBJS)
+	@rm -f $@
+	$(AR) rcs $@ $^
+
+$(BENCH_BIN): $(OUT)/tools/bench/main.o $(BENCH_LIB) $(OUT)/tests/common/libtestcommon.a $(LIB_A)
+	$(CC) $(ALL_CFLAGS) -o $@ $(OUT)/tools/bench/main.o $(BENCH_LIB) \
+	    $(OUT)/tests/common/libtestcommon.a $(LIB_A) $(BENCH_CCD_LIBS) -lm
+
+TOOL_BINS += $(BENCH_BIN)
+
+# The mesh part runs when the meshes were fetched (tools/fetch-meshes.sh).
+BENCH_MESH_ARG = $(if $(wildcard $(BENCH_MESH_DIR)),--mesh-dir $(BENCH_MESH_DIR))
+
+.PHONY: bench bench-quick bench-plots
+bench: $(BENCH_BIN)
+	@mkdir -p $(BENCH_OUT)
+	./$(BENCH_BIN) --out $(BENCH_OUT) $(BENCH_MESH_ARG) $(BENCH_ARGS)
+	@$(MAKE) --no-print-directory bench-plots BENCH_OUT=$(BENCH_OUT)
+
+bench-quick: $(BENCH_BIN)
+	@mkdir -p $(OUT)/bench-quick
+	./$(BENCH_BIN) --quick --out $(OUT)/bench-quick $(BENCH_MESH_ARG) $(BENCH_ARGS)
+	@$(MAKE) --no-print-directory bench-plots BENCH_OUT=$(OUT)/bench-quick
+
+bench-plots:
+	@if command -v gnuplot >/dev/null 2>&1; then \
+	    cd $(BENCH_OUT) && gnuplot work-precision.gp && gnuplot iterations.gp && \
+	    echo "plots: $(BENCH_OUT)/work-precision.png $(BENCH_OUT)/iterations.png"; \
+	else echo "gnuplot not found: no PNG (the .gp scripts and data are in $(BENCH_OUT))"; fi

@@ -1,0 +1,89 @@
+/* SPDX-License-Identifier: MIT */
+/* Benchmark problems: shape pairs at controlled signed distances.
+ *
+ * The protocol of Montaut et al. (RSS 2022, Sec. IV, and the authors' public
+ * benchmark code): shape 1 at the identity, shape 2 with a uniform random
+ * rotation and translation 3u (u a uniform unit vector); a pose is kept only if
+ * the shapes are disjoint; then shape 2 is slid along the separation vector so
+ * that the signed distance takes each of BENCH_TARGET_COUNT fixed values. For a
+ * negative value -p the shapes overlap by p along that axis (the paper's
+ * "signed distance"; the true penetration depth is at most p). */
+#ifndef AGJK_BENCH_PROBLEMS_H
+#define AGJK_BENCH_PROBLEMS_H
+
+#include "agjk/agjk.h"
+#include "rng.h"
+#include "../../tests/common/reference.h"
+
+typedef enum bench_family {
+    BENCH_ELLIPSOIDS = 0, /* radii ~ N(0.1, 0.025) per axis, times a scale in {1, 5, 10} */
+    BENCH_BOXES = 1,      /* half extents drawn like the ellipsoid radii */
+    BENCH_HULLS = 2,      /* N random points on such an ellipsoid (all are hull vertices) */
+    BENCH_MESHES = 3,     /* real meshes read from a directory (vertices' hull) */
+    BENCH_FAMILY_COUNT = 4
+} bench_family;
+
+enum { BENCH_OVERLAPPING = 0, BENCH_CLOSE = 1, BENCH_DISTANT = 2, BENCH_CATEGORY_COUNT = 3 };
+#define BENCH_TARGET_COUNT 12
+extern const double bench_targets[BENCH_TARGET_COUNT];
+int bench_target_category(int target_index);
+const char *bench_family_name(int family);
+const char *bench_category_name(int category);
+
+/* A shape known to both the reference solver and agjk. Never copied after
+ * bench_shape_finish(): its agjk_shape points into the struct itself. */
+typedef struct bench_shape {
+    int kind;                 /* REF_ELLIPSOID, REF_BOX or REF_POLYTOPE */
+    agjk_vec3 size;           /* radii or half extents */
+    agjk_vec3 *vertices;      /* owned (polytopes) */
+    int vertex_count;
+    int tag;                  /* hull size N, or mesh file index */
+    double radius;            /* bounding radius about the local origin */
+    agjk_ellipsoid ellipsoid;
+    agjk_box box;
+    agjk_polytope polytope;
+    agjk_shape shape;
+    ref_shape ref;
+} bench_shape;
+
+typedef struct bench_problem {
+    int family, pair, pose, target_index, category;
+    int a, b;                 /* indices of the shapes */
+    double target;            /* signed distance set by the protocol */
+    agjk_pose pose_a, pose_b;
+    agjk_vec3 xstar;          /* x* = p_A - p_B, -target * n when target > 0, else 0 */
+    ref_result ref;           /* high-precision certified reference */
+    int ref_ok;               /* ref_distance returned 0 */
+} bench_problem;
+
+typedef struct bench_set {
+    bench_shape *shapes;
+    int shape_count, shape_capacity;
+    bench_problem *problems;
+    int problem_count, problem_capacity;
+    int rejected_poses;       /* sampled poses that collided (re-drawn) */
+    int skipped_pairs;        /* pairs for which no disjoint pose was found */
+    double max_target_deviation; /* max |d_ref - target| over target > 0 */
+} bench_set;
+
+typedef struct bench_mesh_source {
+    agjk_vec3 **vertices;     /* one array per mesh, centred */
+    int *counts;
+    int count;
+} bench_mesh_source;
+
+void bench_set_init(bench_set *set, int shape_capacity, int problem_capacity);
+void bench_set_free(bench_set *set);
+
+/* Appends `pairs` pairs x `poses` poses x BENCH_TARGET_COUNT problems of
+ * `family`. hull_n: vertex count for BENCH_HULLS; meshes: for BENCH_MESHES.
+ * with_reference: also run the reference solver on every problem.
+ * Returns 0, or -1 when the set is full. */
+int bench_generate(bench_set *set, int family, int pairs, int poses, int hull_n,
+                   const bench_mesh_source *meshes, bench_rng *rng, int with_reference,
+                   int verbose);
+
+/* Fills the agjk and reference views of a shape whose kind/size/vertices are set. */
+void bench_shape_finish(bench_shape *s);
+
+#endif
