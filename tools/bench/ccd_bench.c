@@ -43,6 +43,7 @@ static void run_case(void *vctx, int index, void *record) {
                 opt.method = col == CB_AGJK_GJK ? AGJK_METHOD_GJK
                                                 : ccd_bench_accel_method(p->family);
                 opt.max_iterations = c->o->max_iterations;
+                if (c->o->tolerance > 0) opt.tolerance = c->o->tolerance * p->scale * p->scale;
                 agjk_collide(&a->shape, &p->pose_a, &b->shape, &p->pose_b, &opt, &res);
                 rec->status[col] = (int)res.status;
                 answer = res.status == AGJK_STATUS_INTERSECTING ? 1

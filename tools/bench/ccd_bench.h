@@ -18,6 +18,9 @@ typedef struct ccd_bench_record {
 typedef struct ccd_bench_options {
     int reps;                 /* 0: answer only, untimed */
     int max_iterations;       /* for both libraries */
+    double tolerance;         /* agjk's absolute gap tolerance at scale 1; a problem
+                                 generated at scale s uses tolerance * s^2 (the same
+                                 relative accuracy); 0: agjk's default */
     double timeout_seconds;   /* per case */
     unsigned columns;         /* bit c: run column c; 0 means all */
 } ccd_bench_options;

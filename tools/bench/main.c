@@ -31,6 +31,10 @@ static void usage(FILE *f) {
         "  --wp-pairs K      pairs in the work-precision run (default 20; 0 disables)\n"
         "  --wp-reps R       repetitions in the work-precision run (default 10)\n"
         "  --ccd-reps R      repetitions in the libccd timing (default 50; 0 disables it)\n"
+        "  --tolerance T     duality-gap tolerance of the tables (default 1e-8)\n"
+        "  --relative        read tolerances as relative (AGJK_TOLERANCE_RELATIVE: g <= T ||x||^2)\n"
+        "                    for agjk's methods; default absolute, as in the paper\n"
+        "  --nesmino-mu MU   NESMINO smoothing parameter (default 0: infinite, see nesmino.h)\n"
         "  --mesh-dir DIR    also benchmark the meshes (OBJ/OFF) found in DIR\n"
         "  --max-meshes K    read at most K meshes (default 1000)\n"
         "  --mesh-scale S    multiply mesh coordinates by S (default 0.1: the pybullet\n"
@@ -75,6 +79,9 @@ static int parse(int argc, char **argv, bench_config *c) {
         INT_OPT("--ccd-reps", ccd_reps)
         INT_OPT("--max-meshes", max_meshes)
 #undef INT_OPT
+        if (strcmp(a, "--relative") == 0) { c->relative = 1; continue; }
+        if (strcmp(a, "--tolerance") == 0 && v) { c->tolerance = atof(v); ++i; continue; }
+        if (strcmp(a, "--nesmino-mu") == 0 && v) { c->nesmino_mu = atof(v); ++i; continue; }
         if (strcmp(a, "--mesh-scale") == 0 && v) { c->mesh_scale = atof(v); ++i; continue; }
         if (strcmp(a, "--seed") == 0 && v) { c->seed = strtoull(v, NULL, 0); ++i; continue; }
         if (strcmp(a, "--mesh-dir") == 0 && v) { c->mesh_dir = v; ++i; continue; }
@@ -143,9 +150,11 @@ static int run_main(const bench_config *c, const bench_set *set, bench_record *r
             /* FW and NESMINO belong to the paper's ellipsoid and cube table only. */
             if (slow && p->family != BENCH_ELLIPSOIDS && p->family != BENCH_BOXES) continue;
             o.tolerance = c->tolerance;
+            o.relative = c->relative;
             o.max_iterations = slow ? c->slow_max_iterations : c->max_iterations;
             o.reps = slow ? c->slow_reps : c->reps;
             o.nesmino_gap_stop = 0; /* the paper's rule: ||x_k - x*|| <= sqrt(eps) */
+            o.nesmino_mu = c->nesmino_mu;
             for (mode = 0; mode < 2; ++mode) {
                 bench_record *r = &recs[n];
                 memset(r, 0, sizeof *r);
@@ -189,10 +198,13 @@ static void run_work_precision(const bench_config *c, const bench_set *set, benc
                     if (p->family != fam || p->pose != 0 || p->pair >= c->wp_pairs || !p->ref_ok)
                         continue;
                     o.tolerance = wp_tolerances[t];
+                    o.relative = c->relative;
                     o.max_iterations = (m == BM_FW || m == BM_NESMINO) ? c->slow_max_iterations
                                                                        : c->max_iterations;
-                    o.reps = c->wp_reps;
+                    o.reps = (m == BM_FW || m == BM_NESMINO) && c->slow_reps < c->wp_reps
+                                 ? c->slow_reps : c->wp_reps;
                     o.nesmino_gap_stop = 1;
+                    o.nesmino_mu = c->nesmino_mu;
                     memset(&r, 0, sizeof r);
                     r.mode = BENCH_DISTANCE;
                     r.method = (signed char)m;
@@ -327,6 +339,7 @@ int main(int argc, char **argv) {
         co.max_iterations = cfg.max_iterations;
         co.timeout_seconds = 10.0;
         co.columns = 0;
+        co.tolerance = cfg.tolerance;
         fprintf(stderr, "agjk-bench: Boolean queries, agjk vs libccd (R = %d, each case "
                         "guarded by a 10 s watchdog)\n", cfg.ccd_reps);
         t0 = bench_now_ns();

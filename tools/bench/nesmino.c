@@ -88,7 +88,8 @@ static v3 support(const bench_shape *s, const agjk_pose *p, v3 d) {
 
 int bench_nesmino(const bench_shape *a, const agjk_pose *pa, const bench_shape *b,
                   const agjk_pose *pb, nesmino_stop stop, double tolerance,
-                  const agjk_vec3 *xstar, int max_iterations, nesmino_result *out) {
+                  const agjk_vec3 *xstar, int max_iterations, double mu,
+                  nesmino_result *out) {
     v3 xa = pa->translation, xb = pb->translation; /* x_0: the shapes' centres */
     v3 ya = xa, yb = xb;
     double t = 1.0;
@@ -101,10 +102,15 @@ int bench_nesmino(const bench_shape *a, const agjk_pose *pa, const bench_shape *
         (b->kind != REF_ELLIPSOID && b->kind != REF_BOX))
         return -1;
     for (k = 1; k <= max_iterations; ++k) {
-        /* Gradient step with 1/L = 1/2 on f = 1/2 ||a - b||^2: both points move
-         * to the midpoint of y_a and y_b, then are projected back. */
-        v3 mid = v3_scale(v3_add(ya, yb), 0.5);
-        v3 na = project(a, pa, mid), nb = project(b, pb, mid);
+        /* Gradient step 1/L = mu/2 along u = x / max(mu, ||x||), x = y_a - y_b:
+         * a moves by -mu/2 u, b by +mu/2 u. With mu >= ||x|| (mu = 0 here)
+         * the step is x/2: both points go to their midpoint. */
+        v3 x0 = v3_sub(ya, yb), step;
+        double nx = sqrt(v3_dot(x0, x0));
+        v3 na, nb;
+        step = (mu <= 0.0 || nx <= mu) ? v3_scale(x0, 0.5) : v3_scale(x0, 0.5 * mu / nx);
+        na = project(a, pa, v3_sub(ya, step));
+        nb = project(b, pb, v3_add(yb, step));
         double t_next = 0.5 * (1.0 + sqrt(1.0 + 4.0 * t * t));
         double beta = (t - 1.0) / t_next;
         v3 x;

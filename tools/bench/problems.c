@@ -34,6 +34,7 @@ void bench_set_init(bench_set *set, int shape_capacity, int problem_capacity) {
         exit(2);
     }
     set->shape_capacity = shape_capacity;
+    set->scale = 1.0;
     set->problem_capacity = problem_capacity;
 }
 
@@ -115,6 +116,9 @@ static int make_shape(bench_set *set, int family, int hull_n, const bench_mesh_s
     int i;
     if (!s) return -1;
     s->size = random_size(rng);
+    s->size.x *= set->scale;
+    s->size.y *= set->scale;
+    s->size.z *= set->scale;
     if (family == BENCH_ELLIPSOIDS) {
         s->kind = REF_ELLIPSOID;
     } else if (family == BENCH_BOXES) {
@@ -128,7 +132,7 @@ static int make_shape(bench_set *set, int family, int hull_n, const bench_mesh_s
         s->vertices = malloc((size_t)hull_n * sizeof *s->vertices);
         if (!s->vertices) exit(2);
         for (i = 0; i < hull_n; ++i) {
-            agjk_vec3 u = bench_rng_unit(rng);
+            agjk_vec3 u = bench_rng_unit(rng); /* size already holds the scale */
             s->vertices[i].x = u.x * s->size.x;
             s->vertices[i].y = u.y * s->size.y;
             s->vertices[i].z = u.z * s->size.z;
@@ -140,7 +144,11 @@ static int make_shape(bench_set *set, int family, int hull_n, const bench_mesh_s
         s->vertex_count = meshes->counts[m];
         s->vertices = malloc((size_t)s->vertex_count * sizeof *s->vertices);
         if (!s->vertices) exit(2);
-        memcpy(s->vertices, meshes->vertices[m], (size_t)s->vertex_count * sizeof *s->vertices);
+        for (i = 0; i < s->vertex_count; ++i) {
+            s->vertices[i].x = meshes->vertices[m][i].x * set->scale;
+            s->vertices[i].y = meshes->vertices[m][i].y * set->scale;
+            s->vertices[i].z = meshes->vertices[m][i].z * set->scale;
+        }
     }
     bench_shape_finish(s);
     return set->shape_count - 1;
@@ -188,9 +196,9 @@ int bench_generate(bench_set *set, int family, int pairs, int poses, int hull_n,
             for (tries = 0; tries < 1000 && !placed; ++tries) {
                 bench_rng_rotation(rng, pb.rotation);
                 u = bench_rng_unit(rng);
-                pb.translation.x = 3.0 * u.x;
-                pb.translation.y = 3.0 * u.y;
-                pb.translation.z = 3.0 * u.z;
+                pb.translation.x = 3.0 * set->scale * u.x;
+                pb.translation.y = 3.0 * set->scale * u.y;
+                pb.translation.z = 3.0 * set->scale * u.z;
                 placed = separation(&set->shapes[ia], &pa, &set->shapes[ib], &pb, &d0, &n);
                 if (!placed) set->rejected_poses++;
             }
@@ -200,7 +208,8 @@ int bench_generate(bench_set *set, int family, int pairs, int poses, int hull_n,
             }
             for (t = 0; t < BENCH_TARGET_COUNT; ++t) {
                 bench_problem *p;
-                double shift = bench_targets[t] - d0;
+                double target = bench_targets[t] * set->scale;
+                double shift = target - d0;
                 if (set->problem_count >= set->problem_capacity) return -1;
                 p = &set->problems[set->problem_count++];
                 memset(p, 0, sizeof *p);
@@ -211,7 +220,8 @@ int bench_generate(bench_set *set, int family, int pairs, int poses, int hull_n,
                 p->category = bench_target_category(t);
                 p->a = ia;
                 p->b = ib;
-                p->target = bench_targets[t];
+                p->target = target;
+                p->scale = set->scale;
                 p->pose_a = pa;
                 p->pose_b = pb;
                 /* Translating B along n (from A to B) by shift changes the
@@ -228,7 +238,7 @@ int bench_generate(bench_set *set, int family, int pairs, int poses, int hull_n,
                     p->ref_ok = ref_distance(&set->shapes[ia].ref, &p->pose_a,
                                              &set->shapes[ib].ref, &p->pose_b, &p->ref) == 0;
                     if (p->ref_ok && p->target > 0) {
-                        double dev = fabs((double)p->ref.distance - p->target);
+                        double dev = fabs((double)p->ref.distance - p->target) / set->scale;
                         if (dev > set->max_target_deviation) set->max_target_deviation = dev;
                     }
                 }

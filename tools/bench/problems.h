@@ -49,7 +49,8 @@ typedef struct bench_shape {
 typedef struct bench_problem {
     int family, pair, pose, target_index, category;
     int a, b;                 /* indices of the shapes */
-    double target;            /* signed distance set by the protocol */
+    double target;            /* signed distance set by the protocol (times scale) */
+    double scale;             /* the set's scale when generated */
     agjk_pose pose_a, pose_b;
     agjk_vec3 xstar;          /* x* = p_A - p_B, -target * n when target > 0, else 0 */
     ref_result ref;           /* high-precision certified reference */
@@ -63,7 +64,9 @@ typedef struct bench_set {
     int problem_count, problem_capacity;
     int rejected_poses;       /* sampled poses that collided (re-drawn) */
     int skipped_pairs;        /* pairs for which no disjoint pose was found */
-    double max_target_deviation; /* max |d_ref - target| over target > 0 */
+    double max_target_deviation; /* max |d_ref - target| / scale over target > 0 */
+    double scale;             /* length scale of the next generated problems (default 1):
+                                 sizes, translations and signed distances are multiplied */
 } bench_set;
 
 typedef struct bench_mesh_source {

@@ -62,7 +62,7 @@ int bench_solve(const bench_set *set, const bench_problem *p, int method, bench_
             double t0 = bench_now_ns();
             if (bench_nesmino(a, &p->pose_a, b, &p->pose_b,
                               o->nesmino_gap_stop ? NESMINO_STOP_GAP : NESMINO_STOP_SOLUTION,
-                              o->tolerance, &p->xstar, o->max_iterations, &nr) != 0) {
+                              o->tolerance, &p->xstar, o->max_iterations, o->nesmino_mu, &nr) != 0) {
                 if (times != stack_times) free(times);
                 return -1;
             }
@@ -80,6 +80,7 @@ int bench_solve(const bench_set *set, const bench_problem *p, int method, bench_
         agjk_result res;
         opt.method = agjk_method_of(method);
         opt.tolerance = o->tolerance;
+        opt.tolerance_mode = o->relative ? AGJK_TOLERANCE_RELATIVE : AGJK_TOLERANCE_ABSOLUTE;
         opt.max_iterations = o->max_iterations;
         opt.compute = AGJK_COMPUTE_DISTANCE; /* the paper times the distance alone */
         for (r = 0; r < reps; ++r) {

@@ -25,9 +25,11 @@ typedef struct bench_run {
 
 typedef struct bench_solve_options {
     double tolerance;
+    int relative;          /* agjk methods: AGJK_TOLERANCE_RELATIVE */
     int max_iterations;
     int reps;              /* R; 0: solve once, untimed */
     int nesmino_gap_stop;  /* NESMINO stops on its duality gap instead of ||x - x*|| */
+    double nesmino_mu;     /* NESMINO smoothing parameter; 0: infinite (see nesmino.h) */
 } bench_solve_options;
 
 /* Returns 0, or -1 if the method does not apply (NESMINO on polytopes,
