@@ -7,6 +7,18 @@
 
 #include <check.h>
 
+/* Assertions for inner loops. Check's ck_assert* record a "last passed
+ * point" with a write to the runner on every call that passes (a system call
+ * each); these only call into Check when they fail. */
+#define TU_ENSURE(cond, ...)                      \
+    do {                                          \
+        if (!(cond)) ck_abort_msg(__VA_ARGS__);   \
+    } while (0)
+#define TU_CHECK(cond) TU_ENSURE(cond, "%s:%d: check failed: %s", __FILE__, __LINE__, #cond)
+#define TU_CHECK_INT_EQ(a, b)                                                              \
+    TU_ENSURE((a) == (b), "%s:%d: %s == %s failed (%lld vs %lld)", __FILE__, __LINE__, #a, #b, \
+              (long long)(a), (long long)(b))
+
 /* Adds test function `fn` in a test case of the same name, with a timeout
  * generous enough for a loaded 2-core CI machine. */
 #define TU_ADD(suite, fn)                          \

@@ -27,24 +27,24 @@ static void expect_distance(const ref_result *r, double truth, double size, cons
                             int i) {
     double tol = 1e-14 * size;
     if (truth < -tol) {
-        ck_assert_msg(r->intersecting == 1, "%s %d: overlap %g not certified", what, i, truth);
-        ck_assert_msg(r->distance == 0.0L, "%s %d: intersecting with distance", what, i);
+        TU_ENSURE(r->intersecting == 1, "%s %d: overlap %g not certified", what, i, truth);
+        TU_ENSURE(r->distance == 0.0L, "%s %d: intersecting with distance", what, i);
         return;
     }
-    ck_assert_msg(r->intersecting == 0, "%s %d: separated pair (d = %g) called intersecting",
+    TU_ENSURE(r->intersecting == 0, "%s %d: separated pair (d = %g) called intersecting",
                   what, i, truth);
-    ck_assert_msg(r->converged == 1, "%s %d: not converged", what, i);
-    ck_assert_msg(fabsl(r->distance - truth) <= tol, "%s %d: distance %.17Lg, truth %.17g", what,
+    TU_ENSURE(r->converged == 1, "%s %d: not converged", what, i);
+    TU_ENSURE(fabsl(r->distance - truth) <= tol, "%s %d: distance %.17Lg, truth %.17g", what,
                   i, r->distance, truth);
-    ck_assert_msg(r->lower <= truth + tol && r->upper >= truth - tol,
+    TU_ENSURE(r->lower <= truth + tol && r->upper >= truth - tol,
                   "%s %d: bounds [%.17Lg, %.17Lg] miss truth %.17g", what, i, r->lower, r->upper,
                   truth);
     if (truth > tol) {
         /* witnesses: distance apart, along the normal */
         agjk_vec3 d = tu_sub(r->witness_b, r->witness_a);
-        ck_assert_msg(fabs(tu_norm(d) - truth) <= 1e-12 * size, "%s %d: witness gap", what, i);
-        ck_assert_msg(fabs(tu_norm(r->normal) - 1.0) <= 1e-12, "%s %d: normal not unit", what, i);
-        ck_assert_msg(tu_dot(d, r->normal) >= truth - 1e-12 * size, "%s %d: normal direction",
+        TU_ENSURE(fabs(tu_norm(d) - truth) <= 1e-12 * size, "%s %d: witness gap", what, i);
+        TU_ENSURE(fabs(tu_norm(r->normal) - 1.0) <= 1e-12, "%s %d: normal not unit", what, i);
+        TU_ENSURE(tu_dot(d, r->normal) >= truth - 1e-12 * size, "%s %d: normal direction",
                       what, i);
     }
 }
@@ -105,9 +105,9 @@ START_TEST(box_box_touching) {
     agjk_pose pa = pose_at(tu_vec(0, 0, 0)), pb = pose_at(tu_vec(0.75, 0.125, 0.0625));
     ref_result r;
     ref_distance(&a, &pa, &b, &pb, &r);
-    ck_assert_int_eq(r.intersecting, 0);
-    ck_assert(r.distance <= 1e-15L);
-    ck_assert(r.lower <= 0.0L);
+    TU_CHECK_INT_EQ(r.intersecting, 0);
+    TU_CHECK(r.distance <= 1e-15L);
+    TU_CHECK(r.lower <= 0.0L);
 }
 END_TEST
 
@@ -156,8 +156,8 @@ START_TEST(polytope_equals_box) {
         ref_result r1, r2;
         ref_distance(&box, &pa, &other, &pb, &r1);
         ref_distance(&poly, &pa, &other, &pb, &r2);
-        ck_assert_int_eq(r1.intersecting, r2.intersecting);
-        ck_assert_msg(fabsl(r1.distance - r2.distance) <= 1e-14L, "%d: %Lg vs %Lg", i,
+        TU_CHECK_INT_EQ(r1.intersecting, r2.intersecting);
+        TU_ENSURE(fabsl(r1.distance - r2.distance) <= 1e-14L, "%d: %Lg vs %Lg", i,
                       r1.distance, r2.distance);
     }
 }
@@ -177,22 +177,22 @@ START_TEST(projection_optimality) {
         for (int k = 0; k < n; k++) w[k] = tu_add(c, tu_scale(tu_unit_vector(&rng), size));
         if (i % 5 == 0 && n >= 3) w[2] = tu_add(tu_scale(w[0], 0.3), tu_scale(w[1], 0.7));
         ref_projection pj;
-        ck_assert_int_eq(ref_project_origin(w, n, &pj), 0);
+        TU_CHECK_INT_EQ(ref_project_origin(w, n, &pj), 0);
         long double p[3] = {pj.point[0], pj.point[1], pj.point[2]};
         long double sum = 0, rec[3] = {0, 0, 0};
         for (int k = 0; k < n; k++) {
-            ck_assert(pj.weights[k] >= 0.0L);
+            TU_CHECK(pj.weights[k] >= 0.0L);
             sum += pj.weights[k];
             rec[0] += pj.weights[k] * w[k].x;
             rec[1] += pj.weights[k] * w[k].y;
             rec[2] += pj.weights[k] * w[k].z;
             long double g = p[0] * (w[k].x - p[0]) + p[1] * (w[k].y - p[1]) + p[2] * (w[k].z - p[2]);
-            ck_assert_msg(g >= -1e-15L * size * size, "case %d vertex %d: <p, w - p> = %Lg", i, k, g);
+            TU_ENSURE(g >= -1e-15L * size * size, "case %d vertex %d: <p, w - p> = %Lg", i, k, g);
         }
-        ck_assert(fabsl(sum - 1.0L) <= 1e-15L);
-        for (int k = 0; k < 3; k++) ck_assert(fabsl(rec[k] - p[k]) <= 1e-15L * size * 4);
+        TU_CHECK(fabsl(sum - 1.0L) <= 1e-15L);
+        for (int k = 0; k < 3; k++) TU_CHECK(fabsl(rec[k] - p[k]) <= 1e-15L * size * 4);
     }
-    ck_assert_int_eq(ref_project_origin(NULL, 1, NULL), -1);
+    TU_CHECK_INT_EQ(ref_project_origin(NULL, 1, NULL), -1);
 }
 END_TEST
 

@@ -49,11 +49,11 @@ static void check_projection(const agjk_vec3 *w, int n, const char *what, int i,
                              agjk_simplex_projection *pj, ref_projection *ref) {
     memset(pj, 0xff, sizeof *pj); /* NaN-ish garbage: every field must be written */
     agjk_status st = agjk_simplex_project_origin(w, n, pj);
-    ck_assert_int_eq(ref_project_origin(w, n, ref), 0);
+    TU_CHECK_INT_EQ(ref_project_origin(w, n, ref), 0);
     double size = max_abs_coord(w, n);
     double tol = POINT_TOL * size;
-    ck_assert_msg(tu_vec_finite(pj->point), "%s %d: non-finite point", what, i);
-    ck_assert_msg(st == AGJK_STATUS_SEPARATED || st == AGJK_STATUS_INTERSECTING,
+    TU_ENSURE(tu_vec_finite(pj->point), "%s %d: non-finite point", what, i);
+    TU_ENSURE(st == AGJK_STATUS_SEPARATED || st == AGJK_STATUS_INTERSECTING,
                   "%s %d: status %d", what, i, (int)st);
     double ex = pj->point.x - (double)ref->point[0], ey = pj->point.y - (double)ref->point[1];
     double ez = pj->point.z - (double)ref->point[2];
@@ -62,43 +62,43 @@ static void check_projection(const agjk_vec3 *w, int n, const char *what, int i,
     if (soft_mode)
         point_failure(err <= tol, size > 0 ? err / size : err, i);
     else
-        ck_assert_msg(err <= tol, "%s %d (n=%d): point (%.17g %.17g %.17g) vs reference "
+        TU_ENSURE(err <= tol, "%s %d (n=%d): point (%.17g %.17g %.17g) vs reference "
                   "(%.17Lg %.17Lg %.17Lg), error %g > %g", what, i, n, pj->point.x, pj->point.y,
                   pj->point.z, ref->point[0], ref->point[1], ref->point[2], err, tol);
     double sum = 0.0;
     agjk_vec3 rec = tu_vec(0, 0, 0);
     for (int k = 0; k < 4; k++) {
-        ck_assert_msg(isfinite(pj->weights[k]), "%s %d: weight %d not finite", what, i, k);
-        ck_assert_msg(pj->weights[k] >= 0.0, "%s %d: weight %d = %g < 0", what, i, k,
+        TU_ENSURE(isfinite(pj->weights[k]), "%s %d: weight %d not finite", what, i, k);
+        TU_ENSURE(pj->weights[k] >= 0.0, "%s %d: weight %d = %g < 0", what, i, k,
                       pj->weights[k]);
         if (k >= n) {
-            ck_assert_msg(pj->weights[k] == 0.0, "%s %d: weight of absent vertex %d", what, i, k);
+            TU_ENSURE(pj->weights[k] == 0.0, "%s %d: weight of absent vertex %d", what, i, k);
             continue;
         }
         int in_mask = (pj->support_mask >> k) & 1u;
-        ck_assert_msg(in_mask == (pj->weights[k] != 0.0),
+        TU_ENSURE(in_mask == (pj->weights[k] != 0.0),
                       "%s %d: mask 0x%x disagrees with weight %d = %g", what, i,
                       (unsigned)pj->support_mask, k, pj->weights[k]);
         sum += pj->weights[k];
         rec = tu_add(rec, tu_scale(w[k], pj->weights[k]));
     }
-    ck_assert_msg((pj->support_mask & ~((1u << n) - 1u)) == 0, "%s %d: mask beyond count", what, i);
-    ck_assert_msg(fabs(sum - 1.0) <= 1e-12, "%s %d: weights sum to %.17g", what, i, sum);
+    TU_ENSURE((pj->support_mask & ~((1u << n) - 1u)) == 0, "%s %d: mask beyond count", what, i);
+    TU_ENSURE(fabs(sum - 1.0) <= 1e-12, "%s %d: weights sum to %.17g", what, i, sum);
     double rec_err = tu_norm(tu_sub(rec, pj->point));
     if (soft_mode)
         point_failure(rec_err <= tol + 1e-12 * size, size > 0 ? rec_err / size : rec_err, i);
     else
-        ck_assert_msg(rec_err <= tol + 1e-12 * size,
+        TU_ENSURE(rec_err <= tol + 1e-12 * size,
                   "%s %d: weights do not reproduce the point: |sum w_i v_i - point| = %g "
                   "(max |coord| %g)", what, i, rec_err, size);
-    ck_assert_int_eq(pj->support_count, popcount4(pj->support_mask));
-    ck_assert(pj->support_count >= 1 && pj->support_count <= n);
+    TU_CHECK_INT_EQ(pj->support_count, popcount4(pj->support_mask));
+    TU_CHECK(pj->support_count >= 1 && pj->support_count <= n);
     /* The status says whether the origin is in the simplex. */
     if (soft_mode)
         point_failure(!(ref->distance > (long double)tol) || st == AGJK_STATUS_SEPARATED,
                       (double)ref->distance / size, i);
     else if (ref->distance > (long double)tol)
-        ck_assert_msg(st == AGJK_STATUS_SEPARATED, "%s %d: origin outside, status %d", what, i,
+        TU_ENSURE(st == AGJK_STATUS_SEPARATED, "%s %d: origin outside, status %d", what, i,
                       (int)st);
 }
 
@@ -130,17 +130,17 @@ START_TEST(random_simplices) {
         check_projection(w, n, "random", i, &pj, &ref);
         if (clearly_minimal(&ref, 1e-6L)) {
             compared++;
-            ck_assert_msg(pj.support_mask == ref.mask, "random %d (n=%d): mask 0x%x, reference 0x%x",
+            TU_ENSURE(pj.support_mask == ref.mask, "random %d (n=%d): mask 0x%x, reference 0x%x",
                           i, n, (unsigned)pj.support_mask, ref.mask);
         }
         if (ref.count == 4 && clearly_minimal(&ref, 1e-6L)) {
             inside++;
-            ck_assert_int_eq(agjk_simplex_project_origin(w, n, &pj), AGJK_STATUS_INTERSECTING);
-            ck_assert_int_eq(pj.support_count, 4);
+            TU_CHECK_INT_EQ(agjk_simplex_project_origin(w, n, &pj), AGJK_STATUS_INTERSECTING);
+            TU_CHECK_INT_EQ(pj.support_count, 4);
         }
     }
-    ck_assert(compared > 15000);
-    ck_assert(inside > 100);
+    TU_CHECK(compared > 15000);
+    TU_CHECK(inside > 100);
     printf("random_simplices: worst point error %.3g x max|coord|, %d masks compared, %d inside\n",
            worst_rel_error, compared, inside);
 }
@@ -187,9 +187,9 @@ START_TEST(degenerate) {
     agjk_simplex_projection pj;
     ref_projection ref;
     check_projection(line, 3, "exact line", 0, &pj, &ref);
-    ck_assert(fabs(pj.point.x) + fabs(pj.point.y) < 1e-15 && fabs(pj.point.z - 1.0) < 1e-15);
+    TU_CHECK(fabs(pj.point.x) + fabs(pj.point.y) < 1e-15 && fabs(pj.point.z - 1.0) < 1e-15);
     check_projection(plane, 4, "exact plane", 0, &pj, &ref);
-    ck_assert(fabs(pj.point.x) + fabs(pj.point.y) < 1e-15 && fabs(pj.point.z - 2.0) < 1e-15);
+    TU_CHECK(fabs(pj.point.x) + fabs(pj.point.y) < 1e-15 && fabs(pj.point.z - 2.0) < 1e-15);
 }
 END_TEST
 
@@ -218,7 +218,7 @@ START_TEST(huge_ranges) {
     }
     soft_mode = 0;
     printf("huge_ranges: worst point error %.3g x max|coord|\n", worst_rel_error);
-    ck_assert_msg(soft_failures == 0,
+    TU_ENSURE(soft_failures == 0,
                   "huge_ranges: %d of 20000 simplices with point or weights off (or the origin "
                   "called inside while outside) by more than %g x max|coord|; worst %.3g x max|coord| (case %d)",
                   soft_failures, POINT_TOL, soft_worst, soft_worst_case);
@@ -255,11 +255,11 @@ START_TEST(origin_on_features) {
         int n = expect + (int)tu_uniform_int(&rng, (uint32_t)(5 - expect));
         agjk_simplex_projection pj;
         check_projection(w, n, "feature", i, &pj, &ref);
-        ck_assert_msg(tu_norm(pj.point) == 0.0, "feature %d: origin on the simplex, point %g", i,
+        TU_ENSURE(tu_norm(pj.point) == 0.0, "feature %d: origin on the simplex, point %g", i,
                       tu_norm(pj.point));
-        ck_assert_int_eq(agjk_simplex_project_origin(w, n, &pj), AGJK_STATUS_INTERSECTING);
+        TU_CHECK_INT_EQ(agjk_simplex_project_origin(w, n, &pj), AGJK_STATUS_INTERSECTING);
         if (clearly_minimal(&ref, 1e-9L))
-            ck_assert_msg(pj.support_count == ref.count, "feature %d (%d): count %d, expected %d", i,
+            TU_ENSURE(pj.support_count == ref.count, "feature %d (%d): count %d, expected %d", i,
                           feature, pj.support_count, ref.count);
     }
 }
@@ -268,11 +268,11 @@ END_TEST
 START_TEST(invalid_input) {
     agjk_vec3 w[5] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 1, 1}, {2, 2, 2}};
     agjk_simplex_projection pj;
-    ck_assert_int_eq(agjk_simplex_project_origin(NULL, 2, &pj), AGJK_STATUS_INVALID_INPUT);
-    ck_assert_int_eq(agjk_simplex_project_origin(w, 2, NULL), AGJK_STATUS_INVALID_INPUT);
-    ck_assert_int_eq(agjk_simplex_project_origin(w, 0, &pj), AGJK_STATUS_INVALID_INPUT);
-    ck_assert_int_eq(agjk_simplex_project_origin(w, -1, &pj), AGJK_STATUS_INVALID_INPUT);
-    ck_assert_int_eq(agjk_simplex_project_origin(w, 5, &pj), AGJK_STATUS_INVALID_INPUT);
+    TU_CHECK_INT_EQ(agjk_simplex_project_origin(NULL, 2, &pj), AGJK_STATUS_INVALID_INPUT);
+    TU_CHECK_INT_EQ(agjk_simplex_project_origin(w, 2, NULL), AGJK_STATUS_INVALID_INPUT);
+    TU_CHECK_INT_EQ(agjk_simplex_project_origin(w, 0, &pj), AGJK_STATUS_INVALID_INPUT);
+    TU_CHECK_INT_EQ(agjk_simplex_project_origin(w, -1, &pj), AGJK_STATUS_INVALID_INPUT);
+    TU_CHECK_INT_EQ(agjk_simplex_project_origin(w, 5, &pj), AGJK_STATUS_INVALID_INPUT);
     const double bad[3] = {NAN, INFINITY, -INFINITY};
     for (int b = 0; b < 3; b++)
         for (int k = 0; k < 4; k++)
@@ -280,7 +280,7 @@ START_TEST(invalid_input) {
                 agjk_vec3 v[4] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 1, 1}};
                 double *comp = c == 0 ? &v[k].x : c == 1 ? &v[k].y : &v[k].z;
                 *comp = bad[b];
-                ck_assert_int_eq(agjk_simplex_project_origin(v, 4, &pj), AGJK_STATUS_INVALID_INPUT);
+                TU_CHECK_INT_EQ(agjk_simplex_project_origin(v, 4, &pj), AGJK_STATUS_INVALID_INPUT);
             }
 }
 END_TEST

@@ -1,0 +1,284 @@
+/* SPDX-License-Identifier: MIT */
+/* Every built-in support function against brute force and against the
+ * reference's analytic support (tests/common/ref_support.c):
+ *   - h(d) = <d, s(d)> equals the analytic support value;
+ *   - <d, s(d)> >= <d, p> for dense samples p of the shape (surface samples,
+ *     or the vertex list of a polytope);
+ *   - s(d) belongs to the shape;
+ * on random, axis-aligned, tiny and huge directions. Constructors reject
+ * negative, NaN and infinite sizes and leave the shape untouched. */
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+#include "check_main.h"
+#include "reference.h"
+#include "testutil.h"
+
+#define N_SAMPLES 4000
+#define N_DIRS 600
+
+/* Sample points of the core of s (margin excluded), in its local frame. */
+static int sample_core(const ref_shape *s, tu_rng *rng, agjk_vec3 *out, int max) {
+    int n = 0;
+    switch (s->kind) {
+    case REF_POINT:
+    case REF_SPHERE:
+        out[n++] = tu_vec(0, 0, 0);
+        break;
+    case REF_ELLIPSOID:
+        for (; n < max; n++) {
+            agjk_vec3 u = tu_unit_vector(rng);
+            out[n] = tu_vec(s->p[0] * u.x, s->p[1] * u.y, s->p[2] * u.z);
+        }
+        break;
+    case REF_BOX:
+        for (; n < max; n++)
+            out[n] = tu_vec(tu_uniform_range(rng, -1, 1) * s->p[0], tu_uniform_range(rng, -1, 1) * s->p[1],
+                            tu_uniform_range(rng, -1, 1) * s->p[2]);
+        for (int k = 0; k < 8 && k < max; k++) /* and the corners */
+            out[k] = tu_vec(k & 1 ? s->p[0] : -s->p[0], k & 2 ? s->p[1] : -s->p[1],
+                            k & 4 ? s->p[2] : -s->p[2]);
+        break;
+    case REF_CAPSULE:
+        for (; n < max; n++) out[n] = tu_vec(0, 0, tu_uniform_range(rng, -1, 1) * s->p[1]);
+        out[0].z = s->p[1];
+        out[1].z = -s->p[1];
+        break;
+    case REF_CYLINDER:
+    case REF_CONE:
+        for (; n < max; n++) {
+            double phi = tu_uniform_range(rng, 0, 6.283185307179586);
+            int top = n % 2;
+            double r = s->p[0];
+            if (s->kind == REF_CONE && top) r = 0.0; /* apex */
+            out[n] = tu_vec(r * cos(phi), r * sin(phi), top ? s->p[1] : -s->p[1]);
+        }
+        break;
+    case REF_POLYTOPE:
+        for (; n < s->vertex_count && n < max; n++) out[n] = s->vertices[n];
+        break;
+    }
+    return n;
+}
+
+/* Distance of a local point from the core of s (0 inside), exact formulas
+ * where they are simple; for ellipsoid and polytope the reference solver. */
+static double core_distance(const ref_shape *s, agjk_vec3 p) {
+    ref_shape core = *s;
+    core.margin = 0.0;
+    if (core.kind == REF_SPHERE) core.p[0] = 0.0;
+    if (core.kind == REF_CAPSULE) core.p[0] = 0.0;
+    agjk_pose id = tu_pose_identity();
+    return tu_distance_to_shape(&core, &id, p);
+}
+
+static agjk_vec3 random_direction(tu_rng *rng, int i) {
+    switch (i % 6) {
+    case 0: { /* axis-aligned, exact zeros in the other components */
+        double v[3] = {0, 0, 0};
+        v[tu_uniform_int(rng, 3)] = tu_uniform(rng) < 0.5 ? -1.0 : 1.0;
+        return tu_vec(v[0], v[1], v[2]);
+    }
+    case 1: /* in a coordinate plane */
+        return tu_vec(tu_normal(rng), tu_normal(rng), 0.0);
+    case 2: /* tiny magnitude */
+        return tu_scale(tu_unit_vector(rng), 1e-300);
+    case 3: /* huge magnitude */
+        return tu_scale(tu_unit_vector(rng), 1e300);
+    default:
+        return tu_scale(tu_unit_vector(rng), tu_log_uniform(rng, -5, 5));
+    }
+}
+
+static void check_shape(ref_shape *s, tu_rng *rng, const char *what) {
+    static agjk_vec3 samples[N_SAMPLES];
+    agjk_shape shape;
+    TU_CHECK_INT_EQ(ref_make_agjk(s, &shape), AGJK_STATUS_OK);
+    double expect_margin = s->margin + ((s->kind == REF_SPHERE || s->kind == REF_CAPSULE) ? s->p[0] : 0);
+    TU_ENSURE(shape.margin == expect_margin, "%s: margin %g, expected %g", what, shape.margin,
+                  expect_margin);
+    int ns = sample_core(s, rng, samples, N_SAMPLES);
+    double size = tu_bounding_radius(s) + 1e-300;
+    for (int i = 0; i < N_DIRS; i++) {
+        agjk_vec3 d = random_direction(rng, i);
+        agjk_vec3 sup = tu_vec(NAN, NAN, NAN);
+        int hint = 0;
+        shape.support(shape.data, &d, &sup, &hint);
+        TU_ENSURE(tu_vec_finite(sup), "%s dir %d: non-finite support", what, i);
+        /* compare with unit direction to keep numbers in range */
+        agjk_vec3 u = tu_scale(d, 1.0 / tu_norm(tu_scale(d, 1.0 / fmax(fabs(d.x), fmax(fabs(d.y), fabs(d.z))))) /
+                                      fmax(fabs(d.x), fmax(fabs(d.y), fabs(d.z))));
+        double h = tu_dot(u, sup);
+        long double dl[3] = {u.x, u.y, u.z}, rs[3];
+        ref_shape core = *s;
+        core.margin = 0.0;
+        if (core.kind == REF_SPHERE || core.kind == REF_CAPSULE) core.p[0] = 0.0;
+        ref_support_local(&core, dl, rs);
+        double h_ref = (double)(dl[0] * rs[0] + dl[1] * rs[1] + dl[2] * rs[2]);
+        TU_ENSURE(fabs(h - h_ref) <= 1e-13 * size, "%s dir %d: h(d) = %.17g, analytic %.17g",
+                      what, i, h, h_ref);
+        for (int k = 0; k < ns; k++)
+            TU_ENSURE(tu_dot(u, samples[k]) <= h + 1e-13 * size,
+                          "%s dir %d: sample %d beats the support by %g", what, i, k,
+                          tu_dot(u, samples[k]) - h);
+        if (i % 10 == 0) {
+            double dist = core_distance(s, sup);
+            TU_ENSURE(dist <= 1e-13 * size, "%s dir %d: support point %g outside the shape",
+                          what, i, dist);
+        }
+        if (s->kind == REF_POLYTOPE) { /* a scan returns one of the vertices */
+            int found = 0;
+            for (int k = 0; k < s->vertex_count; k++)
+                if (s->vertices[k].x == sup.x && s->vertices[k].y == sup.y && s->vertices[k].z == sup.z)
+                    found = 1;
+            TU_ENSURE(found, "%s dir %d: support is not a vertex", what, i);
+        }
+    }
+}
+
+START_TEST(builtin_shapes) {
+    tu_rng rng;
+    tu_rng_seed(&rng, 21);
+    static agjk_vec3 verts[300];
+    for (int rep = 0; rep < 6; rep++) {
+        double sc = rep < 3 ? tu_paper_scale(&rng) : tu_log_uniform(&rng, -4, 4);
+        ref_shape s;
+        tu_shape_init(&s, REF_POINT, 0, 0, 0);
+        check_shape(&s, &rng, "point");
+        tu_shape_init(&s, REF_SPHERE, tu_paper_radius(&rng, sc), 0, 0);
+        check_shape(&s, &rng, "sphere");
+        tu_random_ellipsoid(&rng, &s, sc);
+        check_shape(&s, &rng, "ellipsoid");
+        tu_shape_init(&s, REF_ELLIPSOID, sc, 1e-3 * sc, 1e3 * sc); /* stiff */
+        check_shape(&s, &rng, "stiff ellipsoid");
+        tu_random_box(&rng, &s, sc);
+        check_shape(&s, &rng, "box");
+        tu_shape_init(&s, REF_BOX, sc, 0.0, 0.5 * sc); /* plate */
+        check_shape(&s, &rng, "plate");
+        tu_shape_init(&s, REF_CAPSULE, tu_paper_radius(&rng, sc), tu_paper_radius(&rng, sc), 0);
+        check_shape(&s, &rng, "capsule");
+        tu_shape_init(&s, REF_CYLINDER, tu_paper_radius(&rng, sc), tu_paper_radius(&rng, sc), 0);
+        check_shape(&s, &rng, "cylinder");
+        tu_shape_init(&s, REF_CONE, tu_paper_radius(&rng, sc), tu_paper_radius(&rng, sc), 0);
+        check_shape(&s, &rng, "cone");
+        tu_shape_init(&s, REF_CONE, tu_paper_radius(&rng, sc), 0.0, 0); /* flat disc */
+        check_shape(&s, &rng, "flat cone");
+        int nv = 4 + (int)tu_uniform_int(&rng, 200);
+        tu_random_polytope(&rng, &s, verts, nv, sc);
+        /* interior points and duplicates are allowed */
+        verts[nv] = tu_vec(0, 0, 0);
+        verts[nv + 1] = verts[0];
+        s.vertex_count = nv + 2;
+        check_shape(&s, &rng, "polytope");
+        tu_random_box(&rng, &s, sc);
+        s.margin = 0.3 * sc;
+        check_shape(&s, &rng, "rounded box");
+    }
+}
+END_TEST
+
+/* Calls `make` on a bad argument and checks it is rejected and leaves the
+ * shape exactly as it was. */
+#define EXPECT_REJECT(call)                                                              \
+    do {                                                                                 \
+        agjk_shape sh_;                                                                  \
+        memset(&sh_, 0x5a, sizeof sh_);                                                  \
+        agjk_shape before_ = sh_;                                                        \
+        agjk_shape *shape = &sh_;                                                        \
+        TU_ENSURE((call) == AGJK_STATUS_INVALID_INPUT, "accepted: %s", #call);       \
+        TU_ENSURE(memcmp(&sh_, &before_, sizeof sh_) == 0, "shape changed: %s", #call); \
+    } while (0)
+
+START_TEST(constructors_reject_bad_sizes) {
+    const double bad[4] = {-1.0, -1e-300, NAN, INFINITY};
+    for (int b = 0; b < 4; b++) {
+        double v = bad[b];
+        agjk_ellipsoid e = {{1, 1, 1}};
+        agjk_box bx = {{1, 1, 1}};
+        agjk_capsule c = {1, 1};
+        agjk_cylinder cy = {1, 1};
+        agjk_cone co = {1, 1};
+        EXPECT_REJECT(agjk_shape_sphere(shape, v));
+        e.radii.x = v; EXPECT_REJECT(agjk_shape_ellipsoid(shape, &e)); e.radii.x = 1;
+        e.radii.z = v; EXPECT_REJECT(agjk_shape_ellipsoid(shape, &e)); e.radii.z = 1;
+        bx.half_extents.y = v; EXPECT_REJECT(agjk_shape_box(shape, &bx)); bx.half_extents.y = 1;
+        c.radius = v; EXPECT_REJECT(agjk_shape_capsule(shape, &c)); c.radius = 1;
+        c.half_height = v; EXPECT_REJECT(agjk_shape_capsule(shape, &c));
+        cy.radius = v; EXPECT_REJECT(agjk_shape_cylinder(shape, &cy)); cy.radius = 1;
+        cy.half_height = v; EXPECT_REJECT(agjk_shape_cylinder(shape, &cy));
+        co.radius = v; EXPECT_REJECT(agjk_shape_cone(shape, &co)); co.radius = 1;
+        co.half_height = v; EXPECT_REJECT(agjk_shape_cone(shape, &co));
+        agjk_shape ok;
+        TU_CHECK_INT_EQ(agjk_shape_box(&ok, &bx), AGJK_STATUS_OK);
+        agjk_shape keep = ok;
+        TU_CHECK_INT_EQ(agjk_shape_set_margin(&ok, v), AGJK_STATUS_INVALID_INPUT);
+        TU_CHECK(memcmp(&ok, &keep, sizeof ok) == 0);
+    }
+    /* An ellipsoid needs radii > 0 (documented), unlike the box. */
+    agjk_ellipsoid flat = {{1, 0, 1}};
+    EXPECT_REJECT(agjk_shape_ellipsoid(shape, &flat));
+    /* NULL pointers */
+    agjk_box bx = {{1, 1, 1}};
+    TU_CHECK_INT_EQ(agjk_shape_box(NULL, &bx), AGJK_STATUS_INVALID_INPUT);
+    EXPECT_REJECT(agjk_shape_box(shape, NULL));
+    EXPECT_REJECT(agjk_shape_ellipsoid(shape, NULL));
+    EXPECT_REJECT(agjk_shape_capsule(shape, NULL));
+    EXPECT_REJECT(agjk_shape_cylinder(shape, NULL));
+    EXPECT_REJECT(agjk_shape_cone(shape, NULL));
+    EXPECT_REJECT(agjk_shape_polytope(shape, NULL));
+    TU_CHECK_INT_EQ(agjk_shape_point(NULL), AGJK_STATUS_INVALID_INPUT);
+    TU_CHECK_INT_EQ(agjk_shape_sphere(NULL, 1.0), AGJK_STATUS_INVALID_INPUT);
+    TU_CHECK_INT_EQ(agjk_shape_set_margin(NULL, 1.0), AGJK_STATUS_INVALID_INPUT);
+    /* zero sizes are fine */
+    agjk_shape sh;
+    TU_CHECK_INT_EQ(agjk_shape_sphere(&sh, 0.0), AGJK_STATUS_OK);
+    agjk_box zero = {{0, 0, 0}};
+    TU_CHECK_INT_EQ(agjk_shape_box(&sh, &zero), AGJK_STATUS_OK);
+}
+END_TEST
+
+START_TEST(polytope_rejects_bad_vertices) {
+    agjk_vec3 v[4] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    agjk_polytope p;
+    memset(&p, 0, sizeof p);
+    p.vertices = v;
+    p.vertex_count = 0;
+    EXPECT_REJECT(agjk_shape_polytope(shape, &p));
+    p.vertex_count = -3;
+    EXPECT_REJECT(agjk_shape_polytope(shape, &p));
+    p.vertex_count = 4;
+    p.vertices = NULL;
+    EXPECT_REJECT(agjk_shape_polytope(shape, &p));
+    p.vertices = v;
+    v[2].y = NAN;
+    EXPECT_REJECT(agjk_shape_polytope(shape, &p));
+    v[2].y = -INFINITY;
+    EXPECT_REJECT(agjk_shape_polytope(shape, &p));
+    v[2].y = 1.0;
+    p.vertex_count = AGJK_POLYTOPE_MAX_VERTICES + 1;
+    EXPECT_REJECT(agjk_shape_polytope(shape, &p));
+    p.vertex_count = 4;
+    /* malformed adjacency: offsets not starting at 0 / out-of-range neighbour */
+    int32_t off[5] = {1, 2, 3, 4, 5};
+    int32_t nb[5] = {1, 2, 3, 0, 9};
+    p.neighbor_offsets = off;
+    p.neighbors = nb;
+    EXPECT_REJECT(agjk_shape_polytope(shape, &p));
+    int32_t off2[5] = {0, 1, 2, 3, 4};
+    p.neighbor_offsets = off2;
+    nb[3] = 9; /* neighbour index beyond the vertex count */
+    EXPECT_REJECT(agjk_shape_polytope(shape, &p));
+    p.neighbor_offsets = NULL;
+    p.neighbors = NULL;
+    agjk_shape sh;
+    TU_CHECK_INT_EQ(agjk_shape_polytope(&sh, &p), AGJK_STATUS_OK);
+}
+END_TEST
+
+int main(void) {
+    Suite *s = suite_create("shapes");
+    TU_ADD(s, builtin_shapes);
+    TU_ADD(s, constructors_reject_bad_sizes);
+    TU_ADD(s, polytope_rejects_bad_vertices);
+    return tu_run_suite(s);
+}
