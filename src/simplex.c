@@ -84,79 +84,119 @@ static void keep_best(candidate *best, unsigned mask, const double lambda[4], ag
 static unsigned project_triangle(const agjk_vec3 *p, int n, int i, int j, int k, double lambda[4],
                                  agjk_vec3 *point) {
     agjk_vec3 a = p[i], b = p[j], c = p[k];
-    agjk_vec3 ab = v3_sub(b, a), ac = v3_sub(c, a);
-    agjk_vec3 nrm = v3_cross(ab, ac);
+    agjk_vec3 ab = v3_sub(b, a), bc = v3_sub(c, b), ca = v3_sub(a, c);
+    double lab = v3_norm2(ab), lbc = v3_norm2(bc), lca = v3_norm2(ca);
+    /* The normal (b-a) x (c-a) = (c-b) x (a-b) = (a-c) x (b-c); its rounding error
+     * is about eps |e1| |e2| for the two edges used, so use the two shortest:
+     * with one far vertex, the long edges would cancel catastrophically. */
+    agjk_vec3 nrm;
+    double scale;
+    if (lbc >= lab && lbc >= lca) {
+        nrm = v3_cross(ab, v3_neg(ca));
+        scale = lab * lca;
+    } else if (lca >= lab) {
+        nrm = v3_cross(bc, v3_neg(ab));
+        scale = lbc * lab;
+    } else {
+        nrm = v3_cross(ca, v3_neg(bc));
+        scale = lca * lbc;
+    }
     double nn = v3_norm2(nrm);
-    double scale = v3_norm2(ab) * v3_norm2(ac);
     double edge_sign[3] = {-1.0, -1.0, -1.0}; /* <= 0: try the edge opposite that vertex */
     if (nn > DEGENERATE_RELATIVE * DEGENERATE_RELATIVE * scale) {
-        /* Barycentric coordinates of the origin's projection onto the plane:
-         * lambda_a = <n, b x c> / |n|^2 etc. (invariant under moving the origin
-         * along n). Normalising by their sum keeps the weights summing to 1. */
-        double la = v3_dot(nrm, v3_cross(b, c));
-        double lb = v3_dot(nrm, v3_cross(c, a));
-        double lc = v3_dot(nrm, v3_cross(a, b));
+        /* Foot of the origin on the plane, from the vertex nearest the origin
+         * (the error of <n, v> grows with |v|). */
+        agjk_vec3 v = a;
+        if (v3_norm2(b) < v3_norm2(v)) v = b;
+        if (v3_norm2(c) < v3_norm2(v)) v = c;
+        agjk_vec3 foot = v3_scale(nrm, v3_dot(nrm, v) / nn);
+        /* Barycentric coordinates of the foot from signed areas of the
+         * sub-triangles, measured from the foot itself (Montanari et al. 2017):
+         * lambda_a = <n, (b - f) x (c - f)> / |n|^2, and cyclically. */
+        agjk_vec3 fa = v3_sub(a, foot), fb = v3_sub(b, foot), fc = v3_sub(c, foot);
+        double la = v3_dot(nrm, v3_cross(fb, fc));
+        double lb = v3_dot(nrm, v3_cross(fc, fa));
+        double lc = v3_dot(nrm, v3_cross(fa, fb));
         double sum = la + lb + lc;
         if (la > 0.0 && lb > 0.0 && lc > 0.0 && sum > 0.0) {
             for (int q = 0; q < n; ++q) lambda[q] = 0.0;
             lambda[i] = la / sum;
             lambda[j] = lb / sum;
             lambda[k] = lc / sum;
-            /* The point is the plane's foot of the origin: n <n, a> / |n|^2 is
-             * more accurate than the weighted sum when the triangle is far away. */
-            *point = v3_scale(nrm, v3_dot(nrm, a) / nn);
+            *point = foot;
             return (1u << i) | (1u << j) | (1u << k);
         }
         edge_sign[0] = la;
         edge_sign[1] = lb;
         edge_sign[2] = lc;
     }
+    const int edges[3][2] = {{j, k}, {i, k}, {i, j}};
+    int visible = (edge_sign[0] <= 0.0) + (edge_sign[1] <= 0.0) + (edge_sign[2] <= 0.0);
+    if (visible == 1) {
+        /* The usual case: the closest point is on the one edge facing the origin. */
+        int e = edge_sign[0] <= 0.0 ? 0 : (edge_sign[1] <= 0.0 ? 1 : 2);
+        return project_segment(p, n, edges[e][0], edges[e][1], lambda, point);
+    }
     candidate best;
     best.norm2 = INFINITY;
     best.mask = 0xFu;
-    double tmp[4];
-    agjk_vec3 pt;
-    unsigned m;
-    if (edge_sign[0] <= 0.0) { m = project_segment(p, n, j, k, tmp, &pt); keep_best(&best, m, tmp, pt, n); }
-    if (edge_sign[1] <= 0.0) { m = project_segment(p, n, i, k, tmp, &pt); keep_best(&best, m, tmp, pt, n); }
-    if (edge_sign[2] <= 0.0) { m = project_segment(p, n, i, j, tmp, &pt); keep_best(&best, m, tmp, pt, n); }
+    for (int e = 0; e < 3; ++e) {
+        if (edge_sign[e] > 0.0) continue;
+        double tmp[4];
+        agjk_vec3 pt;
+        unsigned m = project_segment(p, n, edges[e][0], edges[e][1], tmp, &pt);
+        keep_best(&best, m, tmp, pt, n);
+    }
     for (int q = 0; q < n; ++q) lambda[q] = best.lambda[q];
     *point = best.point;
     return best.mask;
 }
 
 static unsigned project_tetrahedron(const agjk_vec3 *p, double lambda[4], agjk_vec3 *point) {
-    agjk_vec3 a = p[0], b = p[1], c = p[2], d = p[3];
-    agjk_vec3 ab = v3_sub(b, a), ac = v3_sub(c, a), ad = v3_sub(d, a);
-    double vol = v3_dot(ab, v3_cross(ac, ad));
-    double scale = v3_norm(ab) * v3_norm(ac) * v3_norm(ad);
+    /* Write the origin as q + mu_1 e_1 + mu_2 e_2 + mu_3 e_3 with q the vertex
+     * nearest the origin and e_i the edges from it, and solve by Cramer's rule:
+     * every rounding error then scales with |q| and the edge lengths rather than
+     * with the distance of the far vertices to the origin. */
+    int apex = 0;
+    for (int v = 1; v < 4; ++v)
+        if (v3_norm2(p[v]) < v3_norm2(p[apex])) apex = v;
+    int other[3], o = 0;
+    for (int v = 0; v < 4; ++v)
+        if (v != apex) other[o++] = v;
+    agjk_vec3 base = p[apex], nq = v3_neg(base);
+    agjk_vec3 e1 = v3_sub(p[other[0]], base), e2 = v3_sub(p[other[1]], base),
+              e3 = v3_sub(p[other[2]], base);
+    agjk_vec3 c23 = v3_cross(e2, e3);
+    double vol = v3_dot(e1, c23);
+    double scale2 = v3_norm2(e1) * v3_norm2(e2) * v3_norm2(e3);
     double face_sign[4] = {-1.0, -1.0, -1.0, -1.0}; /* <= 0: try the face opposite that vertex */
-    if (fabs(vol) > DEGENERATE_RELATIVE * scale) {
-        /* Signed volumes with the origin replacing each vertex in turn. */
-        agjk_vec3 na = v3_neg(a);
-        double v0 = v3_dot(b, v3_cross(c, d));
-        double v1 = v3_dot(na, v3_cross(ac, ad));
-        double v2 = v3_dot(ab, v3_cross(na, ad));
-        double v3v = v3_dot(ab, v3_cross(ac, na));
-        double sum = v0 + v1 + v2 + v3v;
-        /* Orient so that the full volume is positive. */
-        if (sum < 0.0) {
-            v0 = -v0; v1 = -v1; v2 = -v2; v3v = -v3v; sum = -sum;
-        }
-        if (v0 > 0.0 && v1 > 0.0 && v2 > 0.0 && v3v > 0.0 && sum > 0.0) {
-            lambda[0] = v0 / sum;
-            lambda[1] = v1 / sum;
-            lambda[2] = v2 / sum;
-            lambda[3] = v3v / sum;
+    if (vol * vol > DEGENERATE_RELATIVE * DEGENERATE_RELATIVE * scale2) {
+        double n1 = v3_dot(nq, c23);
+        double n2 = v3_dot(e1, v3_cross(nq, e3));
+        double n3 = v3_dot(e1, v3_cross(e2, nq));
+        double n0 = vol - n1 - n2 - n3;
+        /* Orient so that the volume is positive; then a negative coordinate
+         * means the origin lies beyond the face opposite that vertex. */
+        double sgn = vol > 0.0 ? 1.0 : -1.0;
+        double w[4];
+        w[apex] = sgn * n0;
+        w[other[0]] = sgn * n1;
+        w[other[1]] = sgn * n2;
+        w[other[2]] = sgn * n3;
+        double sum = sgn * vol;
+        if (w[0] > 0.0 && w[1] > 0.0 && w[2] > 0.0 && w[3] > 0.0) {
+            for (int v = 0; v < 4; ++v) lambda[v] = w[v] / sum;
             *point = v3(0.0, 0.0, 0.0);
             return 0xFu;
         }
-        face_sign[0] = v0;
-        face_sign[1] = v1;
-        face_sign[2] = v2;
-        face_sign[3] = v3v;
+        for (int v = 0; v < 4; ++v) face_sign[v] = w[v];
     }
     static const int faces[4][3] = {{1, 2, 3}, {0, 2, 3}, {0, 1, 3}, {0, 1, 2}};
+    int visible = 0, last = 0;
+    for (int f = 0; f < 4; ++f)
+        if (face_sign[f] <= 0.0) { ++visible; last = f; }
+    if (visible == 1) /* the usual case: one face faces the origin */
+        return project_triangle(p, 4, faces[last][0], faces[last][1], faces[last][2], lambda, point);
     candidate best;
     best.norm2 = INFINITY;
     best.mask = 0xFu;
