@@ -6,6 +6,7 @@
  * as a caller would. */
 #include "cli.h"
 
+#include <math.h>
 #include <string.h>
 
 int cli_shape_load(const char *path, double scale, int with_adjacency, cli_shape *s) {
@@ -16,9 +17,15 @@ int cli_shape_load(const char *path, double scale, int with_adjacency, cli_shape
         return 0;
     }
     for (size_t i = 0; scale != 1.0 && i < s->points.count; i++) {
-        s->points.points[i].x *= scale;
-        s->points.points[i].y *= scale;
-        s->points.points[i].z *= scale;
+        agjk_vec3 *p = &s->points.points[i];
+        p->x *= scale;
+        p->y *= scale;
+        p->z *= scale;
+        if (!isfinite(p->x) || !isfinite(p->y) || !isfinite(p->z)) {
+            cli_error("%s: vertex %zu overflows when scaled by %g", path, i, scale);
+            mesh_points_free(&s->points);
+            return 0;
+        }
     }
     if (!mesh_hull_build(s->points.points, s->points.count, with_adjacency, &s->hull, err,
                          sizeof err)) {

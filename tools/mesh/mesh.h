@@ -43,6 +43,12 @@ void mesh_points_free(mesh_points *points);
 int mesh_refine_double(const char *path, const char *format, mesh_points *points,
                        long *nonfinite_vertex);
 
+/* assimp rejects an OFF file with no faces, yet such a file is a valid point
+ * cloud: reads it directly. Returns 1 (points in `out`) if `path` is an OFF
+ * file declaring 0 faces whose vertices all parse; -1 if one of them is not
+ * finite (its index in *nonfinite_vertex); 0 otherwise. */
+int mesh_read_off_point_cloud(const char *path, mesh_points *out, long *nonfinite_vertex);
+
 /* 0 if `path` starts with an OFF header whose vertex and face counts cannot
  * fit in `file_size` bytes (a truncated file, or a count meant to exhaust
  * memory: assimp would reserve it before reading); 1 otherwise. */

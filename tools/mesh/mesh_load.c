@@ -201,6 +201,15 @@ int mesh_load(const char *path, mesh_points *out, char *err, size_t err_size) {
     /* JoinIdenticalVertices only shrinks the set; no triangulation or other
      * processing (it could drop point and line primitives). */
     const struct aiScene *scene = aiImportFile(path, aiProcess_JoinIdenticalVertices);
+    long bad = -1;
+    if (!scene && strcmp(out->format, "off") == 0) {
+        int cloud = mesh_read_off_point_cloud(path, out, &bad);
+        if (cloud > 0) return 1;
+        if (cloud < 0) {
+            set_error(err, err_size, "%s: vertex %ld is not finite (NaN or Inf)", path, bad);
+            return 0;
+        }
+    }
     if (!scene) {
         const char *why = aiGetErrorString();
         set_error(err, err_size, "%s: cannot read mesh: %s", path,
@@ -214,7 +223,6 @@ int mesh_load(const char *path, mesh_points *out, char *err, size_t err_size) {
     aiReleaseImport(scene);
     /* Re-read OFF/OBJ coordinates in double (assimp stores floats). Only when
      * no transform moved the points, so file values map one-to-one. */
-    long bad = -1;
     if (ok && all_identity && mesh_refine_double(path, out->format, out, &bad) < 0) {
         set_error(err, err_size, "%s: vertex %ld is not finite (NaN or Inf)", path, bad);
         ok = 0;

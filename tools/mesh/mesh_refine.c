@@ -102,11 +102,12 @@ static int read_off_header(FILE *f, double counts[3]) {
 
 /* OFF: header, then one vertex per line, x y z first. Other variants (4OFF,
  * nOFF) are declined. */
-static int read_off(FILE *f, fvert_list *l) {
+static int read_off(FILE *f, fvert_list *l, double *face_count) {
     char line[4096];
     const char *s;
-    double counts[3];
+    double counts[3] = {0, 0, 0};
     if (read_off_header(f, counts) < 1 || !(counts[0] >= 0 && counts[0] <= 1e9)) return 0;
+    *face_count = counts[1];
     size_t nv = (size_t)counts[0];
     while (l->count < nv && fgets(line, sizeof line, f)) {
         if (!(s = content(line))) continue;
@@ -202,7 +203,8 @@ int mesh_refine_double(const char *path, const char *format, mesh_points *points
     FILE *f = fopen(path, "r");
     if (!f) return 0;
     fvert_list l = {NULL, 0, 0, -1};
-    int ok = is_obj ? read_obj(f, &l) : read_off(f, &l);
+    double faces;
+    int ok = is_obj ? read_obj(f, &l) : read_off(f, &l, &faces);
     fclose(f);
     if (l.nonfinite >= 0) {
         *nonfinite_vertex = l.nonfinite;
@@ -211,6 +213,34 @@ int mesh_refine_double(const char *path, const char *format, mesh_points *points
         qsort(l.v, l.count, sizeof *l.v, fvert_cmp);
         ok = substitute(&l, points);
         points->double_precision = ok;
+    }
+    free(l.v);
+    return ok;
+}
+
+int mesh_read_off_point_cloud(const char *path, mesh_points *out, long *nonfinite_vertex) {
+    FILE *f = fopen(path, "r");
+    if (!f) return 0;
+    fvert_list l = {NULL, 0, 0, -1};
+    double faces = -1;
+    int ok = read_off(f, &l, &faces) && faces == 0 && l.count > 0;
+    /* Nothing but blanks and comments may follow the vertices. */
+    char line[4096];
+    while (ok && fgets(line, sizeof line, f))
+        if (content(line)) ok = 0;
+    fclose(f);
+    *nonfinite_vertex = l.nonfinite;
+    if (ok && l.nonfinite >= 0) ok = -1;
+    if (ok == 1) {
+        out->points = malloc(l.count * sizeof *out->points);
+        if (!out->points) ok = 0;
+        for (size_t i = 0; ok && i < l.count; i++) out->points[i] = l.v[i].p;
+        if (ok) {
+            out->count = l.count;
+            out->mesh_count = 1;
+            out->face_count = 0;
+            out->double_precision = 1;
+        }
     }
     free(l.v);
     return ok;

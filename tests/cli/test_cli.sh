@@ -1,0 +1,302 @@
+#!/bin/sh
+# SPDX-License-Identifier: MIT
+# tests/cli: the agjk command-line tool end to end (owner: helper B).
+#
+#   tests/cli/test_cli.sh [AGJK_BINARY [SOURCE_DIR]]
+#
+# Defaults: the binary next to this script's build copy
+# ($(OUT)/tests/cli/test_cli -> $(OUT)/tools/cli/agjk) and the current
+# directory as the source tree. Truth comes from geometry worked out here
+# (cube gaps, analytic sphere distances with the tessellation error computed
+# from the mesh file by python3), never from agjk's own output.
+set -u
+
+here=$(cd "$(dirname "$0")" && pwd)
+AGJK=${1:-$here/../../tools/cli/agjk}
+SRC=${2:-.}
+MESHES=$SRC/examples/meshes
+fail=0
+pass=0
+tmp=$(mktemp -d "${TMPDIR:-/tmp}/agjk-cli-test.XXXXXX") || exit 1
+trap 'rm -rf "$tmp"' EXIT INT TERM
+
+if [ ! -x "$AGJK" ]; then echo "no agjk binary at $AGJK"; exit 1; fi
+if [ ! -f "$MESHES/cube.off" ]; then echo "no sample meshes under $MESHES"; exit 1; fi
+
+ok() { pass=$((pass + 1)); }
+bad() { fail=$((fail + 1)); echo "FAIL: $*"; }
+
+# run NAME EXPECTED_STATUS ARGS...: runs agjk, keeps stdout/stderr in $tmp.
+# (POSIX sh has no local variables: callers must not rely on name/want/got.)
+run() {
+    name=$1; want=$2; shift 2
+    "$AGJK" "$@" >"$tmp/out" 2>"$tmp/err"
+    got=$?
+    if [ "$got" -ne "$want" ]; then
+        bad "$name: exit status $got, expected $want (agjk $*)"
+        sed 's/^/    stderr: /' "$tmp/err" | head -5
+        return 1
+    fi
+    return 0
+}
+
+# expect_error NAME ARGS...: exit status 2, a message on stderr, nothing on stdout.
+expect_error() {
+    name=$1; shift
+    run "$name" 2 "$@" || return
+    if [ ! -s "$tmp/err" ]; then bad "$name: no message on stderr"; return; fi
+    if [ -s "$tmp/out" ]; then bad "$name: unexpected output on stdout"; return; fi
+    ok
+}
+
+# check_json NAME PYTHON_EXPR: the last output must be one JSON object `r`
+# for which the expression is true. Checks are collected and evaluated by one
+# python3 process at the end (python's start-up dominates otherwise).
+nchecks=0
+: >"$tmp/checks"
+check_json() {
+    nchecks=$((nchecks + 1))
+    cp "$tmp/out" "$tmp/json.$nchecks"
+    printf '%s\t%s\t%s\n' "$nchecks" "$1" "$2" >>"$tmp/checks"
+}
+
+run_json_checks() {
+    python3 -c '
+import json, math, sys
+tmp = sys.argv[1]; good = bad = 0
+for line in open(tmp + "/checks"):
+    n, name, expr = line.rstrip("\n").split("\t", 2)
+    text = open("%s/json.%s" % (tmp, n)).read()
+    try:
+        r = json.loads(text)
+        ok = bool(eval(expr))
+    except Exception as e:
+        ok = False; expr += "  (%s)" % e
+    if ok: good += 1
+    else:
+        bad += 1; print("FAIL: %s: JSON check failed: %s\n    %s" % (name, expr, text[:600]))
+print(good, bad, file=sys.stderr)' "$tmp" 2>"$tmp/counts"
+    read -r g b <"$tmp/counts" || { echo "FAIL: JSON checks did not run"; fail=$((fail + 1)); return; }
+    pass=$((pass + g)); fail=$((fail + b))
+}
+
+# distance_is NAME EXPECTED TOL ARGS...: agjk distance ARGS gives EXPECTED (a
+# python expression) to within TOL, with a small certified bound.
+distance_is() {
+    d_name=$1; d_want=$2; d_tol=$3; shift 3
+    run "$d_name" 0 distance "$@" --json || return
+    check_json "$d_name" "abs(r['distance'] - ($d_want)) <= $d_tol and r['bound'] <= 1e-4"
+}
+
+Q90Z="0.70710678118654757 0 0 0.70710678118654757"   # +90 degrees about z
+
+# --- help and version ---------------------------------------------------------
+for c in distance collide info hull; do
+    run "help $c" 0 "$c" --help && grep -q "SYNOPSIS" "$tmp/out" && ok || bad "help $c text"
+    run "help cmd $c" 0 help "$c" && grep -q "NAME" "$tmp/out" && ok || bad "agjk help $c"
+done
+run "--help" 0 --help && grep -q "EXIT STATUS" "$tmp/out" && ok || bad "--help text"
+run "--version" 0 --version && grep -q "^agjk [0-9]" "$tmp/out" && ok || bad "--version text"
+expect_error "no command"
+expect_error "unknown command" frobnicate
+expect_error "help for unknown" help frobnicate
+
+# --- exact gaps between unit cubes ([-0.5, 0.5]^3) ---------------------------------
+C=$MESHES/cube.off
+distance_is "cubes 2 apart on x" 2 1e-12 "$C" "$C" --pose-b 3 0 0 1 0 0 0
+distance_is "cubes apart diagonally" "math.sqrt(2)" 1e-12 "$C" "$C" --pose-b 2 2 0 1 0 0 0
+distance_is "cubes apart, 3 axes" "math.sqrt(3) * 0.25" 1e-12 "$C" "$C" --pose-b 1.25 -1.25 1.25 1 0 0 0
+distance_is "cube turned 45 deg about z" "3 - 0.5 - math.sqrt(0.5)" 1e-12 "$C" "$C" \
+    --pose-b 3 0 0 0.92387953251128674 0 0 0.38268343236508978
+distance_is "both cubes moved" 0.25 1e-12 "$C" "$C" --pose-a -10 5 1 1 0 0 0 --pose-b -8.75 5 1 1 0 0 0
+distance_is "scaled cube" 1.5 1e-12 "$C" "$C" --pose-b 3 0 0 1 0 0 0 --scale-b 2
+distance_is "scale in mm" 2000 1e-9 "$C" "$C" --pose-b 3000 0 0 1 0 0 0 --scale-a 1000 --scale-b 1000 --relative
+for m in gjk nesterov nesterov-normalized polyak fw; do
+    distance_is "method $m" 2 1e-6 "$C" "$C" --pose-b 3 0 0 1 0 0 0 --method "$m" --max-iterations 1000
+done
+distance_is "scan support" 2 1e-12 "$C" "$C" --pose-b 3 0 0 1 0 0 0 --scan
+run "overlapping cubes" 0 distance "$C" "$C" --pose-b 0.5 0.2 0 1 0 0 0 --json &&
+    check_json "overlapping cubes" "r['status'] == 'intersecting' and r['distance'] == 0"
+
+# --- quaternion convention: +90 degrees about z turns +x into +y ----------------------
+printf 'OFF\n4 4 0\n0 0 0\n2 0 0\n0 0.1 0\n0 0 0.1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n' >"$tmp/arrow.off"
+distance_is "arrow unrotated" "3 - 0.5 - 0.1" 1e-12 "$C" "$tmp/arrow.off" --pose-a 0 3 0 1 0 0 0
+distance_is "arrow +90 about z points to +y" 0.5 1e-12 "$C" "$tmp/arrow.off" --pose-a 0 3 0 1 0 0 0 --pose-b 0 0 0 $Q90Z
+distance_is "quaternion within rounding" 0.5 1e-5 "$C" "$tmp/arrow.off" --pose-a 0 3 0 1 0 0 0 --pose-b 0 0 0 0.7071068 0 0 0.7071068
+distance_is "-q is the same rotation" 0.5 1e-12 "$C" "$tmp/arrow.off" --pose-a 0 3 0 1 0 0 0 --pose-b 0 0 0 -0.70710678118654757 0 0 -0.70710678118654757
+
+# --- collide exit statuses --------------------------------------------------------
+run "collide overlapping" 0 collide "$C" "$C" --pose-b 0.9 0 0 1 0 0 0 && ok
+run "collide separated" 1 collide "$C" "$C" --pose-b 1.1 0 0 1 0 0 0 && ok
+run "collide separated json" 1 collide "$C" "$C" --pose-b 0 0 -5 1 0 0 0 --json &&
+    check_json "collide json" "r['status'] == 'separated' and r['colliding'] is False and abs(r['normal'][2]) > 0.5"
+run "collide overlapping json" 0 collide "$C" "$MESHES/sphere.obj" --pose-b 1.2 0.3 0 1 0 0 0 --json &&
+    check_json "collide json hit" "r['colliding'] is True"
+run "not converged exits 3" 3 distance "$MESHES/sphere.obj" "$MESHES/sphere.obj" \
+    --pose-b 2.5 0.3 0.1 1 0 0 0 --method fw --max-iterations 2 --tolerance 1e-14 && ok
+
+# --- tessellated sphere against the analytic sphere --------------------------------
+# r_in: the smallest distance from the centre to a face plane of sphere.obj.
+# The mesh lies between the balls of radius r_in and 1, so its distance to a
+# convex set at analytic distance D from the unit ball is in [D, D + (1 - r_in)]
+# (twice that for two sphere meshes).
+r_in=$(python3 -c '
+import sys
+v = []; rin = 1.0
+for line in open(sys.argv[1]):
+    t = line.split()
+    if t and t[0] == "v": v.append(tuple(map(float, t[1:4])))
+    elif t and t[0] == "f":
+        a, b, c = (v[int(x.split("/")[0]) - 1] for x in t[1:4])
+        u = [b[i] - a[i] for i in range(3)]; w = [c[i] - a[i] for i in range(3)]
+        n = [u[1]*w[2] - u[2]*w[1], u[2]*w[0] - u[0]*w[2], u[0]*w[1] - u[1]*w[0]]
+        nn = sum(x * x for x in n) ** 0.5
+        rin = min(rin, abs(sum(n[i] * a[i] for i in range(3))) / nn)
+print(repr(rin))' "$MESHES/sphere.obj")
+S=$MESHES/sphere.obj
+# Random rotations (fixed seed) so faces, not only vertices, face each other.
+python3 -c '
+import math, random
+random.seed(7)
+for k in range(6):
+    q = [random.gauss(0, 1) for _ in range(4)]; n = math.sqrt(sum(x * x for x in q))
+    d = random.uniform(2.2, 4.0); u = [random.gauss(0, 1) for _ in range(3)]
+    un = math.sqrt(sum(x * x for x in u))
+    print(" ".join(repr(x) for x in [d * c / un for c in u] + [x / n for x in q]), d)
+' >"$tmp/poses"
+while read -r tx ty tz qw qx qy qz d; do
+    run "spheres at $d" 0 distance "$S" "$S" --pose-b "$tx" "$ty" "$tz" "$qw" "$qx" "$qy" "$qz" --json &&
+        check_json "sphere meshes at centre distance $d" \
+            "$d - 2 - 1e-9 <= r['distance'] <= $d - 2 + 2 * (1 - $r_in) + 1e-9"
+    run "cube-sphere at $d" 0 distance "$C" "$S" --pose-b "$tx" "$ty" "$tz" "$qw" "$qx" "$qy" "$qz" --json &&
+        check_json "cube vs sphere mesh at $d" \
+            "(lambda c: c - 1 - 1e-9 <= r['distance'] <= c - 1 + (1 - $r_in) + 1e-9)(math.sqrt(sum(max(abs(x) - 0.5, 0) ** 2 for x in [$tx, $ty, $tz])))"
+done <"$tmp/poses"
+run "json keys" 0 distance "$C" "$S" --pose-b 2 0 0 1 0 0 0 --json &&
+    check_json "json keys" "all(k in r for k in ['status','distance','bound','witness_a','witness_b','normal','iterations','support_calls','gap']) and len(r['witness_a']) == 3"
+run "json witness" 0 distance "$C" "$S" --pose-b 2 0 0 1 0 0 0 --json &&
+    check_json "witnesses are distance apart" \
+        "abs(math.dist(r['witness_a'], r['witness_b']) - r['distance']) <= 1e-9 and abs(r['witness_a'][0] - 0.5) <= 1e-9"
+
+# --- valid but unusual files --------------------------------------------------------
+distance_is "point cloud" 2 1e-12 "$MESHES/points.obj" "$C" --pose-b 3 0 0 1 0 0 0
+printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nl 1 2\nl 3 4\n' >"$tmp/lines.obj"
+distance_is "lines only" 1.5 1e-12 "$tmp/lines.obj" "$C" --pose-b 0 0 3 1 0 0 0
+distance_is "flat square" 1.5 1e-12 "$MESHES/square.off" "$C" --pose-b 0 0 2 1 0 0 0
+printf '# segment\nv 0 0 -1\nv 0 0 1\nv 0 0 0.5\nl 1 2 3\n' >"$tmp/segment.obj"
+distance_is "collinear" 1.5 1e-12 "$tmp/segment.obj" "$C" --pose-b 2 0 0 1 0 0 0
+printf '# one point\no p\nv 0.25 0 0\nv 0.25 0 0\nf 1 2 1\n' >"$tmp/point.obj"
+distance_is "single point" 2.25 1e-12 "$tmp/point.obj" "$C" --pose-b 3 0 0 1 0 0 0
+run "info flat" 0 info "$MESHES/square.off" --json &&
+    check_json "info flat" "r['hull'].startswith('flat') and r['hull_dimension'] == 2 and r['hill_climbing'] is False"
+run "info sphere" 0 info "$S" --json &&
+    check_json "info sphere" "r['hull_vertices'] == 642 and r['hull_triangles'] == 1280 and r['double_precision'] and r['bbox_max'] == [1, 1, 1]"
+run "info text" 0 info "$C" && grep -q "hull_vertices: *8" "$tmp/out" && ok || bad "info text"
+# Duplicated cube corners and interior points: the hull is still the cube.
+python3 -c '
+import itertools
+pts = [p for p in itertools.product((-0.5, 0.5), repeat=3)] * 3 + [(0.1, 0.2, 0.3), (0, 0, 0)]
+print("OFF\n%d 0 0" % len(pts)); [print(*p) for p in pts]' >"$tmp/dups.off"
+run "duplicates" 0 info "$tmp/dups.off" --json 2>/dev/null && check_json "duplicates" "r['hull_vertices'] == 8"
+# Double precision: coordinates that float cannot hold survive (OFF and OBJ).
+printf 'OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n0 0 0.10000000000000001\n3 0 1 2\n3 0 1 3\n' >"$tmp/thin.off"
+distance_is "double precision coordinates" "3 - 0.10000000000000001 - 0.5" 1e-15 "$tmp/thin.off" "$C" --pose-b 0 0 3 1 0 0 0
+printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1.0000001192092896\nv 0 0 1.00000001\nf 1 2 3\nf 1 2 5\n' >"$tmp/near.obj"
+distance_is "double precision OBJ" "3 - 1.00000001 - 0.5" 1e-15 "$tmp/near.obj" "$C" --pose-b 0 0 3 1 0 0 0
+
+# --- hull output ---------------------------------------------------------------------
+run "hull -o" 0 hull "$S" -o "$tmp/hull.off" && ok
+run "hull reads back" 0 info "$tmp/hull.off" --json &&
+    check_json "hull round trip" "r['hull_vertices'] == 642 and r['double_precision']"
+run "hull distance" 0 distance "$tmp/hull.off" "$C" --pose-b 2.5 0.1 0 1 0 0 0 --json && cp "$tmp/out" "$tmp/a.json"
+run "mesh distance" 0 distance "$S" "$C" --pose-b 2.5 0.1 0 1 0 0 0 --json &&
+    python3 -c 'import json,sys; a,b=(json.load(open(f)) for f in sys.argv[1:]); sys.exit(abs(a["distance"]-b["distance"]) > 1e-12)' \
+        "$tmp/a.json" "$tmp/out" && ok || bad "hull file gives the same distance"
+run "hull to stdout" 0 hull "$C" -o - && head -1 "$tmp/out" | grep -q '^OFF' && ok || bad "hull -o -"
+expect_error "hull without -o" hull "$C"
+expect_error "hull unwritable" hull "$C" -o "$tmp/no/such/dir/x.off"
+
+# --- bad files: exit status 2, a message naming the file, no crash -------------------
+: >"$tmp/empty.off"
+: >"$tmp/empty.obj"
+head -c 200 "$S" >"$tmp/trunc.obj"
+head -c 70 "$C" >"$tmp/trunc.off"
+python3 -c '
+import random, sys
+random.seed(3)
+open(sys.argv[1], "wb").write(bytes(random.randrange(256) for _ in range(5000)))
+open(sys.argv[2], "wb").write(bytes(random.randrange(256) for _ in range(5000)))
+open(sys.argv[3], "wb").write(open(sys.argv[5]).read().encode("utf-16"))
+open(sys.argv[4], "wb").write(b"\x00" * 4096)' \
+    "$tmp/garbage.obj" "$tmp/garbage.off" "$tmp/utf16.obj" "$tmp/zeros.off" "$S"
+printf 'v 0 0 0\nv 1 0 0\nv nan 0 1\nv 0 1 0\nf 1 2 3\nf 1 2 4\n' >"$tmp/nan.obj"
+printf 'OFF\n4 1 0\n0 0 0\n1 0 0\n0 1 0\n0 0 inf\n3 0 1 2\n' >"$tmp/inf.off"
+printf 'v 0 0 0\nv 1e999 0 0\nv 0 1 0\nf 1 2 3\n' >"$tmp/overflow.obj"
+printf 'OFF\n1000000000 1 0\n0 0 0\n' >"$tmp/hugecount.off"
+printf 'ply\nformat ascii 1.0\nelement vertex 2000000000\nproperty float x\nproperty float y\nproperty float z\nend_header\n0 0 0\n' >"$tmp/huge.ply"
+printf '# nothing but a comment, long enough for assimp\n' >"$tmp/comments.obj"
+printf 'solid broken\nfacet normal 0 0 1\nouter loop\nvertex 0 0\n' >"$tmp/broken.stl"
+mkdir -p "$tmp/dir.off"
+for f in empty.off empty.obj trunc.obj trunc.off garbage.obj garbage.off utf16.obj zeros.off \
+         nan.obj inf.off overflow.obj hugecount.off huge.ply comments.obj broken.stl dir.off \
+         missing.off; do
+    expect_error "bad file $f" distance "$tmp/$f" "$C" --timeout 60
+    grep -q "$f" "$tmp/err" || bad "message for $f does not name the file"
+done
+for f in empty.off garbage.obj nan.obj huge.ply; do
+    expect_error "bad file $f (info)" info "$tmp/$f" --timeout 60
+done
+run "nan message" 2 info "$tmp/nan.obj"; grep -q "not finite" "$tmp/err" && ok || bad "NaN message"
+
+# Random corruption of good files: any outcome but a crash or a hang. A
+# corrupted file may still be valid, so exit status 0 is allowed too.
+python3 -c '
+import random, sys
+random.seed(11)
+for name in sys.argv[2:]:
+    data = open(name, "rb").read()
+    for k in range(8):
+        b = bytearray(data)
+        for _ in range(random.choice((1, 5, 40))):
+            b[random.randrange(len(b))] = random.randrange(256)
+        ext = name.rsplit(".", 1)[1]
+        open("%s/mut_%s_%02d.%s" % (sys.argv[1], ext, k, ext), "wb").write(b)' "$tmp" "$C" "$S"
+for f in "$tmp"/mut_*; do
+    "$AGJK" distance "$f" "$C" --timeout 60 >/dev/null 2>"$tmp/err"
+    s=$?
+    if [ "$s" -ne 0 ] && [ "$s" -ne 2 ]; then bad "corrupted $(basename "$f"): exit status $s"
+    elif [ "$s" -eq 2 ] && [ ! -s "$tmp/err" ]; then bad "corrupted $(basename "$f"): no message"
+    else ok; fi
+done
+
+# --- bad command lines -----------------------------------------------------------------
+expect_error "one file" distance "$C"
+expect_error "three files" distance "$C" "$C" "$C"
+expect_error "unknown option" distance "$C" "$C" --frobnicate
+expect_error "pose too short" distance "$C" "$C" --pose-b 1 2 3
+expect_error "pose not a number" distance "$C" "$C" --pose-b 1 2 3x 1 0 0 0
+expect_error "pose nan" distance "$C" "$C" --pose-b nan 0 0 1 0 0 0
+expect_error "pose inf" distance "$C" "$C" --pose-b 0 inf 0 1 0 0 0
+expect_error "pose empty" distance "$C" "$C" --pose-b "" 0 0 1 0 0 0
+expect_error "pose leading blank" distance "$C" "$C" --pose-b " 1" 0 0 1 0 0 0
+expect_error "pose overflow" distance "$C" "$C" --pose-b 1e999 0 0 1 0 0 0
+expect_error "quaternion not unit" distance "$C" "$C" --pose-b 0 0 0 1 1 0 0
+expect_error "quaternion zero" distance "$C" "$C" --pose-b 0 0 0 0 0 0 0
+expect_error "quaternion 1.001" distance "$C" "$C" --pose-b 0 0 0 1.001 0 0 0
+expect_error "method unknown" distance "$C" "$C" --method newton
+expect_error "method missing" distance "$C" "$C" --method
+expect_error "tolerance zero" distance "$C" "$C" --tolerance 0
+expect_error "tolerance negative" distance "$C" "$C" --tolerance -1e-8
+expect_error "tolerance text" distance "$C" "$C" --tolerance 1e-8x
+expect_error "iterations zero" distance "$C" "$C" --max-iterations 0
+expect_error "iterations fraction" distance "$C" "$C" --max-iterations 2.5
+expect_error "iterations huge" distance "$C" "$C" --max-iterations 99999999999999
+expect_error "scale zero" distance "$C" "$C" --scale-a 0
+expect_error "scale negative" distance "$C" "$C" --scale-b -2
+expect_error "scale overflow" distance "$C" "$tmp/arrow.off" --scale-b 1e308
+expect_error "json on hull" hull "$C" -o "$tmp/x.off" --json
+expect_error "timeout negative" info "$C" --timeout -1
+
+run_json_checks
+echo "cli tests: $pass passed, $fail failed"
+[ "$fail" -eq 0 ]
