@@ -4,7 +4,7 @@
 #
 #   make check-stability   only these test programs
 #   make check-asan        all of `make check` rebuilt with ASan + UBSan in $(OUT)/asan
-#   make check-tsan        the thread and stability tests under ThreadSanitizer in $(OUT)/tsan
+#   make check-tsan        the thread-safety test under ThreadSanitizer in $(OUT)/tsan
 #   make check-valgrind    every test program of `make check` under valgrind memcheck
 
 STAB_OUT := $(OUT)/tests/stability
@@ -55,9 +55,8 @@ check-asan:
 TSAN_FLAGS := -fsanitize=thread
 check-tsan:
 	$(MAKE) OUT=$(OUT)/tsan OPT="-O1 -g $(TSAN_FLAGS)" LDFLAGS="$(TSAN_FLAGS)" \
-	    $(OUT)/tsan/tests/stability/test_threads $(OUT)/tsan/tests/stability/test_bad_input
+	    $(OUT)/tsan/tests/stability/test_threads
 	TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1 ./$(OUT)/tsan/tests/stability/test_threads
-	TSAN_OPTIONS=halt_on_error=1 ./$(OUT)/tsan/tests/stability/test_bad_input
 
 # Valgrind: every compiled test program of `make check` (not the scripts).
 # Check forks each test by default; CK_FORK=no keeps them in the traced
