@@ -7,7 +7,7 @@
 #define ROTATION_TOLERANCE 1e-6
 
 int agjk__pose_is_valid(const agjk_pose *pose) {
-    if (!pose || !v3_isfinite(pose->translation)) return 0;
+    if (!pose || !v3_in_range(pose->translation)) return 0;
     const double *r = &pose->rotation[0][0]; /* row-major, r[3 * row + column] */
     for (int i = 0; i < 9; ++i)
         if (!isfinite(r[i])) return 0;

@@ -21,7 +21,7 @@ typedef struct agjk__minkowski {
     double margin_a, margin_b;
     double margin;         /* margin_a + margin_b */
     int hint_a, hint_b;
-    int bad_support;       /* a callback returned a non-finite point */
+    int bad_support;       /* a callback returned a non-finite or out-of-range point */
     /* Largest |a| + |b| seen, for the floating-point noise estimate. */
     double magnitude;
 } agjk__minkowski;
@@ -35,12 +35,16 @@ void agjk__minkowski_init(agjk__minkowski *md, const agjk_shape *a, const agjk_p
 
 /* s = argmin_{s in D} <d, s> = S_A(-d) - S_B(d) (paper eq. 7-8), d in A's frame, non-zero. */
 static inline void agjk__minkowski_support(agjk__minkowski *md, agjk_vec3 d, agjk__vertex *out) {
+    /* Callbacks get directions of reasonable size: a denormal or huge one would
+     * overflow the first 1/|d| a support function computes. */
+    double dm = v3_maxabs(d);
+    if (dm < 1e-100 || dm > 1e100) d = v3_normalize(d);
     agjk_vec3 na = v3_neg(d);
     agjk_vec3 db = m3_tmul(&md->rotation[0][0], d);
     agjk_vec3 pa, pb;
     md->support_a(md->data_a, &na, &pa, &md->hint_a);
     md->support_b(md->data_b, &db, &pb, &md->hint_b);
-    if (!v3_isfinite(pa) || !v3_isfinite(pb)) {
+    if (!v3_in_range(pa) || !v3_in_range(pb)) {
         md->bad_support = 1;
         pa = v3(0.0, 0.0, 0.0);
         pb = v3(0.0, 0.0, 0.0);

@@ -6,7 +6,7 @@
 #include "solver.h"
 
 static int shape_is_valid(const agjk_shape *shape) {
-    return shape && shape->support && isfinite(shape->margin) && shape->margin >= 0.0;
+    return shape && shape->support && shape->margin >= 0.0 && shape->margin <= AGJK_MAX_COORDINATE;
 }
 
 /* Reads the caller's options, whatever version of agjk_options it compiled
@@ -42,8 +42,14 @@ static agjk_vec3 to_world(const agjk_pose *pose, agjk_vec3 p) {
 static agjk_vec3 initial_guess(const agjk_options *opts, const agjk_pose *pose_a,
                                const agjk__minkowski *md) {
     agjk_vec3 x0 = v3_neg(md->translation);
-    if (opts->use_initial_direction)
+    if (opts->use_initial_direction) {
         x0 = m3_tmul(&pose_a->rotation[0][0], opts->initial_direction);
+        /* Only its direction and rough size matter (it seeds the momentum):
+         * bring an absurdly tiny or huge guess to unit length. */
+        double m = v3_maxabs(x0);
+        if (m > AGJK_MAX_COORDINATE || (m > 0.0 && m < 1.0 / AGJK_MAX_COORDINATE))
+            x0 = v3_normalize(x0);
+    }
     if (v3_maxabs(x0) == 0.0) x0 = v3(1.0, 0.0, 0.0);
     return x0;
 }
@@ -111,7 +117,7 @@ static agjk_status run(const agjk_shape *a, const agjk_pose *pose_a, const agjk_
         status = lower > md.margin ? AGJK_STATUS_SEPARATED : AGJK_STATUS_CONTACT_WITHIN_TOLERANCE;
     else
         status = AGJK_STATUS_NOT_CONVERGED;
-    result->gap = out.gap_valid ? out.gap : 0.0;
+    result->gap = gap; /* a rounding-level negative gap is reported as 0 */
     result->normal = m3_mul(&pose_a->rotation[0][0], n_local);
     if (!boolean_mode) {
         double distance = core - md.margin;

@@ -7,7 +7,7 @@
 #include "agjk/shapes.h"
 #include "vec3.h"
 
-static inline int size_is_valid(double v) { return isfinite(v) && v >= 0.0; }
+static inline int size_is_valid(double v) { return v >= 0.0 && v <= AGJK_MAX_COORDINATE; }
 
 static inline agjk_status shape_fill(agjk_shape *shape, agjk_support_fn support, const void *data,
                                      double margin) {

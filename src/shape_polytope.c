@@ -78,7 +78,7 @@ agjk_status agjk_shape_polytope(agjk_shape *shape, const agjk_polytope *polytope
         polytope->vertex_count > AGJK_POLYTOPE_MAX_VERTICES)
         return AGJK_STATUS_INVALID_INPUT;
     for (int i = 0; i < polytope->vertex_count; ++i)
-        if (!v3_isfinite(polytope->vertices[i])) return AGJK_STATUS_INVALID_INPUT;
+        if (!v3_in_range(polytope->vertices[i])) return AGJK_STATUS_INVALID_INPUT;
     if (!adjacency_is_valid(polytope)) return AGJK_STATUS_INVALID_INPUT;
     return shape_fill(shape, polytope_support, polytope, 0.0);
 }

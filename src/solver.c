@@ -148,6 +148,12 @@ void agjk__solve(agjk__minkowski *md, const agjk__solve_input *in, agjk__solve_o
                 g = 2.0 * v3_dot(x, v3_sub(x, s.w));
             }
             if (!m.active) {
+                /* x is in D and s minimises <x, .> over D, so g >= 0 up to
+                 * rounding. Clearly negative: the support function lies. */
+                if (g < -4.0 * sqrt(x2) * noise_scale(md)) {
+                    out->outcome = AGJK__BAD_SUPPORT;
+                    break;
+                }
                 out->gap = g; /* a true Frank-Wolfe gap: s = S_D(x) */
                 out->gap_valid = 1;
                 if (g <= tol) { out->outcome = AGJK__CONVERGED; break; }

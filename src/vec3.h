@@ -32,6 +32,11 @@ static inline agjk_vec3 v3_lerp2(agjk_vec3 a, double s, agjk_vec3 b, double t) {
 static inline int v3_isfinite(agjk_vec3 a) {
     return isfinite(a.x) && isfinite(a.y) && isfinite(a.z);
 }
+/* Finite and within AGJK_MAX_COORDINATE (NaN fails every comparison). */
+static inline int v3_in_range(agjk_vec3 a) {
+    return fabs(a.x) <= AGJK_MAX_COORDINATE && fabs(a.y) <= AGJK_MAX_COORDINATE &&
+           fabs(a.z) <= AGJK_MAX_COORDINATE;
+}
 static inline double v3_maxabs(agjk_vec3 a) {
     double m = fabs(a.x);
     if (fabs(a.y) > m) m = fabs(a.y);
@@ -40,10 +45,15 @@ static inline double v3_maxabs(agjk_vec3 a) {
 }
 /* Unit vector along a, or the zero vector when a is zero. Scales first so that
  * tiny or huge vectors neither underflow nor overflow in the squared norm. */
+/* a / m for m > 0, without overflowing 1/m when m is denormal. */
+static inline agjk_vec3 v3_div(agjk_vec3 a, double m) {
+    if (m >= 1e-300) return v3_scale(a, 1.0 / m); /* 1/m finite: multiply */
+    return v3(a.x / m, a.y / m, a.z / m);
+}
 static inline agjk_vec3 v3_normalize(agjk_vec3 a) {
     double m = v3_maxabs(a);
     if (!(m > 0.0)) return v3(0.0, 0.0, 0.0);
-    a = v3_scale(a, 1.0 / m);
+    a = v3_div(a, m);
     return v3_scale(a, 1.0 / v3_norm(a));
 }
 /* R * p and R^T * p for a row-major 3x3 matrix given as 9 doubles

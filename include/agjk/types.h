@@ -26,6 +26,12 @@
 extern "C" {
 #endif
 
+/** Largest coordinate magnitude agjk accepts anywhere: translations, support
+ *  points, sizes, vertices. Products of up to six coordinates (volumes squared)
+ *  must not overflow a double; 1e50 leaves room for that. Larger values give
+ *  AGJK_STATUS_INVALID_INPUT. */
+#define AGJK_MAX_COORDINATE 1e50
+
 /** A 3-vector of doubles. */
 typedef struct agjk_vec3 {
     double x, y, z;
@@ -58,8 +64,9 @@ typedef enum agjk_status {
      *  and a valid certified bound; no verdict is given. */
     AGJK_STATUS_NOT_CONVERGED = 3,
     /** An argument was invalid (NULL pointer, NaN/Inf, negative size, bad
-     *  rotation, tolerance <= 0, max_iterations < 1, unknown enum, a support
-     *  function that returned a non-finite point). Nothing was computed. */
+     *  rotation, tolerance <= 0, max_iterations < 1, unknown enum, a coordinate
+     *  beyond AGJK_MAX_COORDINATE, a support function that returned a non-finite
+     *  or out-of-range point). Nothing was computed. */
     AGJK_STATUS_INVALID_INPUT = 4,
     /** Success of a function that gives no geometric verdict (the shape
      *  constructors of agjk/shapes.h). Queries never return it. */
