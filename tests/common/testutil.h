@@ -80,8 +80,9 @@ double tu_bounding_radius(const ref_shape *s);
 int tu_set_distance(const ref_shape *a, const agjk_pose *pose_a, const ref_shape *b,
                     agjk_pose *pose_b, double target, ref_result *before);
 
-/* Distance from the world point p to the shape (margins included), by the
- * reference solver (a point shape against s); 0 when p is inside. */
+/* Certified lower bound on the distance from the world point p to the shape
+ * (margins included), by the reference solver (a point shape against s);
+ * 0 when p is inside or on the boundary. */
 double tu_distance_to_shape(const ref_shape *s, const agjk_pose *pose, agjk_vec3 p);
 
 #endif
