@@ -110,10 +110,15 @@ static agjk_status run(const agjk_shape *a, const agjk_pose *pose_a, const agjk_
     double lower = core - gap / (2.0 * core);
     double lower2 = core - sqrt(gap);
     if (lower2 > lower) lower = lower2;
-    lower -= out.noise;
+    lower -= 2.0 * out.noise; /* rounding of x and of the support points */
     agjk_vec3 n_local = v3_scale(out.x, -1.0 / core); /* from A towards B */
+    /* At the floating-point floor an absolute tolerance counts as met (the
+     * tolerance is documented to be raised to the floor); a relative one does
+     * not, since the relative accuracy it promises was not reached. */
+    int converged = out.outcome == AGJK__CONVERGED ||
+                    (out.outcome == AGJK__AT_FLOOR && !in.relative);
     agjk_status status;
-    if (out.outcome == AGJK__CONVERGED)
+    if (converged)
         status = lower > md.margin ? AGJK_STATUS_SEPARATED : AGJK_STATUS_CONTACT_WITHIN_TOLERANCE;
     else
         status = AGJK_STATUS_NOT_CONVERGED;

@@ -18,20 +18,26 @@
 
 #include "simplex.h"
 
-/* Tolerance actually used: the requested one, but never below what the
- * floating-point evaluation of g can resolve (2 ||x|| times the error of w),
- * so that huge or far-away problems stop instead of churning at the noise. */
-static double effective_tolerance(const agjk__solve_input *in, double x_norm2, double noise) {
-    double requested = in->relative ? in->tolerance * x_norm2 : in->tolerance;
-    double floor = 2.0 * sqrt(x_norm2) * noise;
-    return requested > floor ? requested : floor;
-}
-
 /* Error scale of a computed point of D: a few ulps of the magnitudes involved
  * (the support points and B's translation in A's frame). */
 static double noise_scale(const agjk__minkowski *md) {
-    return 64.0 * DBL_EPSILON * (md->magnitude + v3_maxabs(md->translation));
+    return 4.0 * DBL_EPSILON * (md->magnitude + v3_maxabs(md->translation));
 }
+
+/* The requested tolerance on g. Relative mode asks for a distance error of at
+ * most tolerance/2 times the distance ||x|| - margins: since the distance error
+ * is at most g / (2 ||x||), that is g <= tolerance ||x|| (||x|| - margins). */
+static double requested_tolerance(const agjk__solve_input *in, const agjk__minkowski *md,
+                                  double x_norm2) {
+    if (!in->relative) return in->tolerance;
+    double x_norm = sqrt(x_norm2);
+    double gap = x_norm - md->margin;
+    return gap > 0.0 ? in->tolerance * x_norm * gap : 0.0;
+}
+
+/* What the floating-point evaluation of g can resolve: 2 ||x|| times the error
+ * of a support point. Below it the solver would only churn at the noise. */
+static double floor_tolerance(double x_norm2, double noise) { return 2.0 * sqrt(x_norm2) * noise; }
 
 /* Alg. 2: the plane of normal d through s separates D (inflated by the margins)
  * from the origin when <d, s> > ||d|| (margin + rounding). */
@@ -124,14 +130,16 @@ void agjk__solve(agjk__minkowski *md, const agjk__solve_input *in, agjk__solve_o
         }
         if (have_x) {
             double x2 = v3_norm2(x);
-            double tol = effective_tolerance(in, x2, noise_scale(md));
+            double requested = requested_tolerance(in, md, x2);
+            double floor = floor_tolerance(x2, noise_scale(md));
+            double tol = requested > floor ? requested : floor;
             double g = 2.0 * v3_dot(x, v3_sub(x, s.w)); /* eq. 29 */
             if (m.active && g <= tol) {
                 /* Alg. 6 lines 5-7: the momentum direction makes no progress. */
                 if (parallel(d, x)) {
                     out->gap = g;
                     out->gap_valid = 1;
-                    out->outcome = AGJK__CONVERGED;
+                    out->outcome = g <= requested ? AGJK__CONVERGED : AGJK__AT_FLOOR;
                     break;
                 }
                 m.active = 0;
@@ -156,7 +164,8 @@ void agjk__solve(agjk__minkowski *md, const agjk__solve_input *in, agjk__solve_o
                 }
                 out->gap = g; /* a true Frank-Wolfe gap: s = S_D(x) */
                 out->gap_valid = 1;
-                if (g <= tol) { out->outcome = AGJK__CONVERGED; break; }
+                if (g <= requested) { out->outcome = AGJK__CONVERGED; break; }
+                if (g <= tol) { out->outcome = AGJK__AT_FLOOR; break; }
             }
         }
         agjk_vec3 x_new;

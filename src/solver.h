@@ -21,7 +21,8 @@ agjk_vec3 agjk__momentum_direction(const agjk__momentum *m, int k, agjk_vec3 x);
 int agjk__method_has_momentum(agjk_method method);
 
 typedef enum agjk__outcome {
-    AGJK__CONVERGED,      /* duality gap met the tolerance */
+    AGJK__CONVERGED,      /* duality gap met the requested tolerance */
+    AGJK__AT_FLOOR,       /* gap down to what double precision resolves, above the request */
     AGJK__INTERSECTING,   /* origin enclosed (or core distance below the margins) */
     AGJK__SEPARATED_EARLY,/* Boolean mode: a separating plane was found */
     AGJK__ITERATION_CAP,

@@ -100,10 +100,13 @@ typedef enum agjk_tolerance_mode {
      *  i.e. 0.1 mm for a part measured in metres, 1e-4 mm for a part in mm.
      *  This is the paper's criterion. */
     AGJK_TOLERANCE_ABSOLUTE = 0,
-    /** Stop when g <= tolerance * ||x||^2: dimensionless. Certifies a relative
-     *  distance error of at most tolerance / 2 (|d - d*| <= d * tolerance / 2),
-     *  the same for a 1 mm part and a 10 m part, and still accurate for shapes
-     *  that nearly touch. */
+    /** Stop when g <= tolerance * ||x|| * d, d = ||x|| - margins the distance:
+     *  dimensionless. Certifies a relative distance error of at most
+     *  tolerance / 2 (|d - d*| <= d * tolerance / 2), the same for a 1 mm part
+     *  and a 10 m part, and still accurate for shapes that nearly touch. When
+     *  double precision cannot reach that accuracy (d below about 1e-15 x the
+     *  shapes' size / tolerance) the query ends AGJK_STATUS_NOT_CONVERGED with
+     *  the bound it did reach. */
     AGJK_TOLERANCE_RELATIVE = 1
 } agjk_tolerance_mode;
 
@@ -150,9 +153,10 @@ typedef struct agjk_options {
     /** How `tolerance` is read. Default AGJK_TOLERANCE_ABSOLUTE. */
     agjk_tolerance_mode tolerance_mode;
     /** Tolerance on the duality gap, > 0 and finite; see agjk_tolerance_mode
-     *  for units. Default 1e-8 (the paper's). Values below the floating-point
-     *  floor (about 1e-15 of the squared size of the problem) cannot be met:
-     *  the solver stops there and result.gap tells what it reached. */
+     *  for units. Default 1e-8 (the paper's). In absolute mode a value below the
+     *  floating-point floor (g resolved to about 2 ||x|| * 4 eps * the size of
+     *  the problem) is raised to that floor; result.gap and result.bound tell
+     *  what was reached. */
     double tolerance;
     /** Iteration cap, >= 1. Default 1000 (the paper's benchmark setting). */
     int32_t max_iterations;
