@@ -204,6 +204,16 @@ distance_is "double precision coordinates" "3 - 0.10000000000000001 - 0.5" 1e-15
 printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1.0000001192092896\nv 0 0 1.00000001\nf 1 2 3\nf 1 2 5\n' >"$tmp/near.obj"
 distance_is "double precision OBJ" "3 - 1.00000001 - 0.5" 1e-15 "$tmp/near.obj" "$C" --pose-b 0 0 3 1 0 0 0
 
+# Byte order mark, CRLF line ends, a Latin-1 comment: still the same tetrahedron.
+printf '\357\273\277v 0 0 0\r\nv 1 0 0\r\nv 0 1 0\r\nv 0 0 1\r\nf 1 2 3\r\nf 1 2 4\r\n' >"$tmp/bom.obj"
+distance_is "UTF-8 BOM + CRLF OBJ" 1.5 1e-12 "$tmp/bom.obj" "$C" --pose-b 0 0 3 1 0 0 0
+printf '\357\273\277OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 1 2\n3 0 1 3\n' >"$tmp/bom.off"
+distance_is "UTF-8 BOM OFF" 1.5 1e-12 "$tmp/bom.off" "$C" --pose-b 0 0 3 1 0 0 0
+printf '# caf\351 \377 comment\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 2 3\nf 1 2 4\n' >"$tmp/latin1.obj"
+distance_is "Latin-1 comment" 1.5 1e-12 "$tmp/latin1.obj" "$C" --pose-b 0 0 3 1 0 0 0
+run "degenerate hull written" 0 hull "$MESHES/square.off" -o "$tmp/sqhull.off" && ok
+distance_is "degenerate hull reads back" 1.5 1e-12 "$tmp/sqhull.off" "$C" --pose-b 0 0 2 1 0 0 0
+
 # --- hull output ---------------------------------------------------------------------
 run "hull -o" 0 hull "$S" -o "$tmp/hull.off" && ok
 run "hull reads back" 0 info "$tmp/hull.off" --json &&

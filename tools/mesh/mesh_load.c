@@ -194,13 +194,46 @@ static int collect_scene(const char *path, const struct aiScene *scene, mesh_poi
     return 1;
 }
 
+/* A UTF-8 byte order mark (common from Windows editors) makes assimp's OBJ and
+ * OFF parsers misread the first line, so for those formats we strip it and
+ * import from memory (single-file formats: nothing else to resolve). */
+static const struct aiScene *import_scene(const char *path, const char *format) {
+    const unsigned flags = aiProcess_JoinIdenticalVertices;
+    unsigned char head[3] = {0, 0, 0};
+    FILE *f = fopen(path, "rb");
+    size_t got = f ? fread(head, 1, 3, f) : 0;
+    int bom = got == 3 && head[0] == 0xEF && head[1] == 0xBB && head[2] == 0xBF;
+    if (!bom || (strcmp(format, "obj") != 0 && strcmp(format, "off") != 0)) {
+        if (f) fclose(f);
+        return aiImportFile(path, flags);
+    }
+    /* Read the rest of the file. */
+    size_t cap = 1 << 16, len = 0;
+    char *buf = malloc(cap);
+    while (buf) {
+        len += fread(buf + len, 1, cap - len, f);
+        if (len < cap) break;
+        char *bigger = realloc(buf, cap *= 2);
+        if (!bigger) {
+            free(buf);
+            buf = NULL;
+        }
+        buf = bigger;
+    }
+    fclose(f);
+    if (!buf) return NULL;
+    const struct aiScene *scene = aiImportFileFromMemory(buf, (unsigned)len, flags, format);
+    free(buf);
+    return scene;
+}
+
 int mesh_load(const char *path, mesh_points *out, char *err, size_t err_size) {
     memset(out, 0, sizeof *out);
     file_extension(path, out->format, sizeof out->format);
     if (!precheck_file(path, out->format, err, err_size)) return 0;
     /* JoinIdenticalVertices only shrinks the set; no triangulation or other
      * processing (it could drop point and line primitives). */
-    const struct aiScene *scene = aiImportFile(path, aiProcess_JoinIdenticalVertices);
+    const struct aiScene *scene = import_scene(path, out->format);
     long bad = -1;
     if (!scene && strcmp(out->format, "off") == 0) {
         int cloud = mesh_read_off_point_cloud(path, out, &bad);

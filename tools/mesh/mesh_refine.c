@@ -64,8 +64,12 @@ static int read3(const char *s, double c[3]) {
     return n;
 }
 
-/* Skips blanks; returns NULL for an empty or comment-only line. */
+/* Skips blanks (and a UTF-8 byte order mark); returns NULL for an empty or
+ * comment-only line. */
 static const char *content(const char *line) {
+    if ((unsigned char)line[0] == 0xEF && (unsigned char)line[1] == 0xBB &&
+        (unsigned char)line[2] == 0xBF)
+        line += 3;
     while (*line == ' ' || *line == '\t' || *line == '\r') line++;
     return (*line == '\0' || *line == '\n' || *line == '#') ? NULL : line;
 }
