@@ -3,7 +3,7 @@
 
 CORE_TESTS := test_simplex test_shapes test_api test_analytic test_methods test_properties test_collide
 CORE_TEST_BINS := $(CORE_TESTS:%=$(OUT)/tests/core/%)
-CORE_TOOL_BINS :=
+CORE_TOOL_BINS := $(OUT)/tests/core/iterations
 
 $(OUT)/tests/core/%: tests/core/%.c $(OUT)/tests/common/libtestcommon.a $(LIB_A) \
                      $(wildcard tests/common/*.h) $(HEADERS)
