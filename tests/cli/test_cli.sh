@@ -178,6 +178,25 @@ run "json witness" 0 distance "$C" "$S" --pose-b 2 0 0 1 0 0 0 --json &&
     check_json "witnesses are distance apart" \
         "abs(math.dist(r['witness_a'], r['witness_b']) - r['distance']) <= 1e-9 and abs(r['witness_a'][0] - 0.5) <= 1e-9"
 
+# --- random poses against a brute-force reference (tests/cli/ref_distance.py) ---------
+# Exact polytope distances by feature pairs in plain Python; the answer must be
+# within agjk's certified bound and 1e-9 relative.
+python3 "$SRC/tests/cli/ref_distance.py" mesh 1 "$tmp/ico1.obj"
+for pair in "$C $tmp/ico1.obj 1" "$MESHES/tetrahedron.off $C 2" "$tmp/ico1.obj $tmp/ico1.obj 3"; do
+    set -- $pair
+    pa=$1; pb=$2; seed=$3
+    python3 "$SRC/tests/cli/ref_distance.py" case "$seed" 10 "$pa" "$pb" >"$tmp/cases" ||
+        bad "reference cases for $pa $pb"
+    while read -r tx ty tz qw qx qy qz ref; do
+        for m in nesterov gjk; do
+            run "random pose $m" 0 distance "$pa" "$pb" --pose-b "$tx" "$ty" "$tz" "$qw" "$qx" "$qy" "$qz" \
+                --method $m --json &&
+                check_json "$(basename "$pa") vs $(basename "$pb") at $tx $ty $tz ($m): reference $ref" \
+                    "(r['status'] == 'intersecting') if $ref == 0 else (r['status'] == 'separated' and abs(r['distance'] - $ref) <= r['bound'] + 1e-13 and abs(r['distance'] - $ref) <= 1e-9 * $ref)"
+        done
+    done <"$tmp/cases"
+done
+
 # --- valid but unusual files --------------------------------------------------------
 distance_is "point cloud" 2 1e-12 "$MESHES/points.obj" "$C" --pose-b 3 0 0 1 0 0 0
 printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nl 1 2\nl 3 4\n' >"$tmp/lines.obj"
