@@ -223,6 +223,38 @@ distance_is "double precision coordinates" "3 - 0.10000000000000001 - 0.5" 1e-15
 printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1.0000001192092896\nv 0 0 1.00000001\nf 1 2 3\nf 1 2 5\n' >"$tmp/near.obj"
 distance_is "double precision OBJ" "3 - 1.00000001 - 0.5" 1e-15 "$tmp/near.obj" "$C" --pose-b 0 0 3 1 0 0 0
 
+# Other formats through assimp: PLY, binary STL, and glTF with a node
+# transform (translation 10, scale 2) that must be applied.
+python3 -c '
+import itertools, struct, sys
+pts = list(itertools.product((-0.5, 0.5), repeat=3))
+quads = [(0, 1, 3, 2), (4, 6, 7, 5), (0, 4, 5, 1), (2, 3, 7, 6), (0, 2, 6, 4), (1, 5, 7, 3)]
+with open(sys.argv[1] + "/cube.ply", "w") as f:
+    f.write("ply\nformat ascii 1.0\nelement vertex 8\nproperty float x\nproperty float y\n"
+            "property float z\nelement face 6\nproperty list uchar int vertex_indices\nend_header\n")
+    for p in pts: f.write("%r %r %r\n" % p)
+    for q in quads: f.write("4 %d %d %d %d\n" % q)
+tris = [(q[0], q[i], q[i + 1]) for q in quads for i in (1, 2)]
+with open(sys.argv[1] + "/cube.stl", "wb") as f:
+    f.write(b"\0" * 80 + struct.pack("<I", len(tris)))
+    for t in tris:
+        f.write(struct.pack("<3f", 0, 0, 0) + b"".join(struct.pack("<3f", *pts[i]) for i in t) + b"\0\0")
+' "$tmp"
+distance_is "PLY cube" 2 1e-12 "$tmp/cube.ply" "$C" --pose-b 3 0 0 1 0 0 0
+distance_is "binary STL cube" 2 1e-12 "$tmp/cube.stl" "$C" --pose-b 3 0 0 1 0 0 0
+cat >"$tmp/tet.gltf" <<'EOF_GLTF'
+{"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}],
+ "nodes": [{"children": [1], "translation": [10, 0, 0]}, {"mesh": 0, "scale": [2, 2, 2]}],
+ "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "mode": 0}]}],
+ "buffers": [{"byteLength": 48, "uri": "data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAAAAAAAAAAAAAAAIA/"}],
+ "bufferViews": [{"buffer": 0, "byteLength": 48}],
+ "accessors": [{"bufferView": 0, "componentType": 5126, "count": 4, "type": "VEC3", "min": [0, 0, 0], "max": [1, 1, 1]}]}
+EOF_GLTF
+run "glTF node transforms" 0 info "$tmp/tet.gltf" --json &&
+    check_json "glTF node transforms" "r['bbox_min'] == [10, 0, 0] and r['bbox_max'] == [12, 2, 2] and r['hull_vertices'] == 4"
+# The tetrahedron (10,0,0) (12,0,0) (10,2,0) (10,0,2) against the cube at the origin.
+distance_is "glTF distance" 9.5 1e-12 "$tmp/tet.gltf" "$C"
+
 # Byte order mark, CRLF line ends, a Latin-1 comment: still the same tetrahedron.
 printf '\357\273\277v 0 0 0\r\nv 1 0 0\r\nv 0 1 0\r\nv 0 0 1\r\nf 1 2 3\r\nf 1 2 4\r\n' >"$tmp/bom.obj"
 distance_is "UTF-8 BOM + CRLF OBJ" 1.5 1e-12 "$tmp/bom.obj" "$C" --pose-b 0 0 3 1 0 0 0
