@@ -8,8 +8,9 @@
  *     returned normal must really separate the shapes (checked with the
  *     reference's own support functions, in long double);
  *   - INTERSECTING only if the reference does not certify a separation;
- *   - CONTACT_WITHIN_TOLERANCE only when the shapes are within the tolerance
- *     scale of touching (|distance| <= sqrt(tolerance)), counted;
+ *   - CONTACT_WITHIN_TOLERANCE for a separated pair only when its distance
+ *     is within the tolerance scale (sqrt(tolerance)); on overlaps (distance
+ *     0) it is truthful and only counted;
  *   - NOT_CONVERGED (an honest "undecided") is counted per method and
  *     reported, not failed.
  * (Coal answers "separated" on ~1/3 of ellipsoid pairs overlapping by 1e-4
@@ -47,8 +48,8 @@ static long double posed_support(const ref_shape *s, const agjk_pose *p, agjk_ve
 
 typedef struct tally {
     int wrong, contact, contact_disallowed, not_converged, decided, queries, skipped;
-    int nc_by_method[5], nc_max_iterations, contact_fw_overlap;
-    char first_wrong[300];
+    int nc_by_method[5], nc_max_iterations, contact_deep_overlap[5];
+    char first_wrong[300], first_contact[300];
 } tally;
 
 static void random_shape(tu_rng *rng, ref_shape *s, agjk_vec3 *store, int kind, double sc) {
@@ -112,18 +113,21 @@ static void run_target(tu_rng *rng, double target, agjk_tolerance_mode mode, dou
                  * sqrt of the gap tolerance or of the floating-point floor
                  * (types.h: ~1e-15 of the squared size). For a separated pair
                  * that is rigorous: a gap g <= tol with <x, s> <= 0 needs
-                 * |x|^2 <= g/2. An overlap has distance 0, so CONTACT is
-                 * truthful there; still, the methods with a simplex should
-                 * enclose the origin unless the overlap is that shallow.
-                 * Plain FW keeps no simplex: it cannot certify an overlap at
-                 * all, so its CONTACT on overlaps is only counted. */
+                 * |x|^2 <= g/2. An overlapping pair has distance 0 (query.h),
+                 * so CONTACT is truthful there whatever the depth; those
+                 * beyond the scale are counted per method and reported (a
+                 * simplex method should usually enclose the origin; plain FW
+                 * keeps no simplex and cannot certify an overlap at all). */
                 double floor_gap = 1e-15 * size * size;
                 double scale = sqrt(fmax(mode == AGJK_TOLERANCE_ABSOLUTE ? tol : 0.0, floor_gap));
-                if (truth_separated && (double)ref.lower > scale) tl->contact_disallowed++;
-                if (truth_overlap && fabs(target) > scale) {
-                    if (o.method == AGJK_METHOD_FRANK_WOLFE) tl->contact_fw_overlap++;
-                    else tl->contact_disallowed++;
-                }
+                int bad = truth_separated && (double)ref.lower > scale;
+                if (truth_overlap && fabs(target) > scale) tl->contact_deep_overlap[m]++;
+                if (bad && tl->contact_disallowed++ == 0)
+                    snprintf(tl->first_contact, sizeof tl->first_contact,
+                             "target %g pair %d kind %d %s: reference [%.3Lg, %.3Lg]%s, gap %g, "
+                             "%d iterations, tolerance scale %g", target, i, kind,
+                             agjk_method_name(o.method), ref.lower, ref.upper,
+                             ref.intersecting ? " intersecting" : "", r.gap, (int)r.iterations, scale);
             } else if (st == AGJK_STATUS_NOT_CONVERGED) {
                 /* An honest "undecided" (types.h: cap hit or no floating-point
                  * progress), not a wrong answer; counted per method. */
@@ -149,16 +153,18 @@ static void run_all(agjk_tolerance_mode mode, double tol, uint64_t seed) {
     tally tl;
     memset(&tl, 0, sizeof tl);
     for (int k = 0; k < N_TARGETS; k++) run_target(&rng, targets[k], mode, tol, &tl);
-    printf("collide %s %g: %d queries, %d decided, %d contact (%d beyond the tolerance scale, "
-           "%d more by FW on overlaps), "
+    printf("collide %s %g: %d queries, %d decided, %d contact (%d separated beyond the tolerance "
+           "scale; on overlaps deeper than it gjk/nesterov/normalized/polyak/fw %d/%d/%d/%d/%d), "
            "%d not converged (gjk/nesterov/normalized/polyak/fw %d/%d/%d/%d/%d; non-FW ones after up to %d iterations), "
            "%d pairs skipped (reference uncertain), %d wrong\n",
            mode ? "rel" : "abs", tol, tl.queries, tl.decided, tl.contact, tl.contact_disallowed,
-           tl.contact_fw_overlap, tl.not_converged, tl.nc_by_method[0], tl.nc_by_method[1], tl.nc_by_method[2],
+           tl.contact_deep_overlap[0], tl.contact_deep_overlap[1], tl.contact_deep_overlap[2],
+           tl.contact_deep_overlap[3], tl.contact_deep_overlap[4], tl.not_converged, tl.nc_by_method[0], tl.nc_by_method[1], tl.nc_by_method[2],
            tl.nc_by_method[3], tl.nc_by_method[4], tl.nc_max_iterations, tl.skipped, tl.wrong);
     TU_ENSURE(tl.wrong == 0, "%d wrong answers; first: %s", tl.wrong, tl.first_wrong);
-    TU_ENSURE(tl.contact_disallowed == 0, "%d CONTACT answers for pairs beyond the tolerance scale",
-              tl.contact_disallowed);
+    TU_ENSURE(tl.contact_disallowed == 0,
+              "%d CONTACT answers for pairs beyond the tolerance scale; first: %s",
+              tl.contact_disallowed, tl.first_contact);
     TU_ENSURE(tl.skipped * 20 <= tl.queries / 5, "reference uncertain on %d pairs", tl.skipped);
 }
 
