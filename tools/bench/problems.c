@@ -235,8 +235,15 @@ int bench_generate(bench_set *set, int family, int pairs, int poses, int hull_n,
                     p->xstar.z = -p->target * n.z;
                 }
                 if (with_reference) {
-                    p->ref_ok = ref_distance(&set->shapes[ia].ref, &p->pose_a,
-                                             &set->shapes[ib].ref, &p->pose_b, &p->ref) == 0;
+                    int rc = ref_distance(&set->shapes[ia].ref, &p->pose_a,
+                                          &set->shapes[ib].ref, &p->pose_b, &p->ref);
+                    /* A non-converged reference whose certified bounds are still
+                     * within 1e-9 of each other (it stalls at the long-double
+                     * floor on some touching boxes) judges results just as well. */
+                    long double lo = p->ref.lower, hi = p->ref.upper;
+                    p->ref_ok = rc == 0 || (!p->ref.intersecting && lo >= 0 && hi >= lo &&
+                                            hi - lo <= 1e-9L * (hi > 1 ? hi : 1));
+                    if (rc != 0 && p->ref_ok) set->ref_stalled++;
                     if (p->ref_ok && p->target > 0) {
                         double dev = fabs((double)p->ref.distance - p->target) / set->scale;
                         if (dev > set->max_target_deviation) set->max_target_deviation = dev;

@@ -54,7 +54,8 @@ typedef struct bench_problem {
     agjk_pose pose_a, pose_b;
     agjk_vec3 xstar;          /* x* = p_A - p_B, -target * n when target > 0, else 0 */
     ref_result ref;           /* high-precision certified reference */
-    int ref_ok;               /* ref_distance returned 0 */
+    int ref_ok;               /* ref_distance converged, or its certified bounds are
+                                 within 1e-9 of each other */
 } bench_problem;
 
 typedef struct bench_set {
@@ -64,6 +65,7 @@ typedef struct bench_set {
     int problem_count, problem_capacity;
     int rejected_poses;       /* sampled poses that collided (re-drawn) */
     int skipped_pairs;        /* pairs for which no disjoint pose was found */
+    int ref_stalled;          /* references not converged but with tight bounds (kept) */
     double max_target_deviation; /* max |d_ref - target| / scale over target > 0 */
     double scale;             /* length scale of the next generated problems (default 1):
                                  sizes, translations and signed distances are multiplied */

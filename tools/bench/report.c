@@ -52,7 +52,7 @@ static int family_present(const bench_report *r, int family) {
 /* Paper Table II: rows = distance category, columns = methods. */
 static void table_methods(FILE *f, const bench_report *r, int family, int mode, int what) {
     int c, m;
-    fprintf(f, "| %s | ", mode ? "Boolean" : "distance");
+    fprintf(f, "| %s, %s | ", mode ? "Boolean" : "distance", what == 0 ? "iterations" : "us");
     for (m = 0; m < BM_COUNT; ++m) fprintf(f, "%s | ", bench_method_name(m));
     fprintf(f, "\n|---|");
     for (m = 0; m < BM_COUNT; ++m) fprintf(f, "---|");
@@ -437,6 +437,14 @@ int bench_write_reports(const bench_report *r) {
             r->cfg->reps, r->cfg->slow_reps, r->cfg->slow_pairs, r->seconds[0], r->seconds[1],
             r->seconds[2], r->seconds[3], r->seconds[4]);
 
+    {
+        int ok = 0;
+        for (i = 0; i < r->set->problem_count; ++i) ok += r->set->problems[i].ref_ok;
+        fprintf(md, "Reference (tests/common, long double, certified by its own duality gap): "
+                    "%d problems judged, of which %d where it stalled with certified bounds "
+                    "within 1e-9 of each other; %d excluded (no usable reference).\n\n",
+                ok, r->set->ref_stalled, r->set->problem_count - ok);
+    }
     fprintf(md, "## Headline: median ns per query, ellipsoids\n\n");
     table_headline(md, r, BENCH_ELLIPSOIDS);
     fprintf(md, "## Headline: median ns per query, boxes\n\n");
