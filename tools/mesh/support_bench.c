@@ -2,7 +2,9 @@
 /* support_bench: cost of a polytope support call, scan vs hill climbing, by
  * hull size, to choose the switch-over (run by hand; not part of `make check`).
  *
- *   make support-bench && out/tools/mesh/support_bench [calls_per_run]
+ *   make support-bench && out/tools/mesh/support_bench [calls_per_run [runs]]
+ *   (defaults 20000 and 9: about 10 s; on a loaded machine raise `runs`,
+ *   since the minimum over runs is what approaches the unloaded cost)
  *
  * Hulls: n random points on the unit sphere (every point is a hull vertex,
  * about 6 neighbours each, like a tessellated curved part), hull and adjacency
@@ -182,9 +184,10 @@ static double time_queries(const agjk_shape *s, int queries, int warm, int runs)
 }
 
 int main(int argc, char **argv) {
-    int calls = argc > 1 ? atoi(argv[1]) : 100000;
+    int calls = argc > 1 ? atoi(argv[1]) : 20000;
+    int runs = argc > 2 ? atoi(argv[2]) : 9;
     if (calls < 100) calls = 100;
-    const int runs = 5;
+    if (runs < 1) runs = 1;
     static const int sizes[] = {8, 16, 32, 64, 128, 512, 2048};
     double qres[sizeof sizes / sizeof sizes[0]][4];
     agjk_vec3 *random_dirs = malloc((size_t)calls * sizeof *random_dirs);
