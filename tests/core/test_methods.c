@@ -11,6 +11,8 @@
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
+#include "agjk/polytope.h"
+#include "brute_hull.h"
 #include "core_checks.h"
 
 #define PAIRS_PER_TARGET 30
@@ -18,6 +20,9 @@
 
 static const double targets[] = {-0.1, -1e-2, -1e-3, -1e-4, 1e-4, 1e-3, 1e-2, 0.1, 0.5, 1.0, 5.0};
 #define N_TARGETS ((int)(sizeof targets / sizeof targets[0]))
+
+/* When set, attached to the agjk polytopes built in run_pair (hill climbing). */
+static const agjk_polytope *adjacency_a, *adjacency_b;
 
 typedef struct tally {
     int status[5][5];
@@ -42,6 +47,8 @@ static void run_pair(ref_shape *a, const agjk_pose *pa, ref_shape *b, const agjk
     agjk_shape sa, sb;
     TU_CHECK_INT_EQ(ref_make_agjk(a, &sa), AGJK_STATUS_OK);
     TU_CHECK_INT_EQ(ref_make_agjk(b, &sb), AGJK_STATUS_OK);
+    if (adjacency_a != NULL) TU_CHECK_INT_EQ(agjk_shape_polytope(&sa, adjacency_a), AGJK_STATUS_OK);
+    if (adjacency_b != NULL) TU_CHECK_INT_EQ(agjk_shape_polytope(&sb, adjacency_b), AGJK_STATUS_OK);
     for (int mode = 0; mode < 2; mode++) {
         for (int m = 0; m < 5; m++) {
             agjk_options o = agjk_default_options();
@@ -182,10 +189,120 @@ START_TEST(mixed_shapes_with_margins) {
 }
 END_TEST
 
+START_TEST(polytopes_hill_climbing) {
+    /* Polytopes with the hull adjacency (hill-climbing support, >= 32
+     * vertices) must give the same certified answers. */
+    tu_rng rng;
+    tu_rng_seed(&rng, 44);
+    static agjk_vec3 va[64], vb[64];
+    static int32_t ta[3 * 128], tb[3 * 128];
+    tally tl;
+    memset(&tl, 0, sizeof tl);
+    for (int i = 0; i < 120; i++) {
+        ref_shape a, b;
+        double sc = tu_paper_scale(&rng);
+        int na = 32 + (int)tu_uniform_int(&rng, 32), nb = 32 + (int)tu_uniform_int(&rng, 32);
+        tu_random_polytope(&rng, &a, va, na, sc);
+        tu_random_polytope(&rng, &b, vb, nb, sc);
+        int nta = brute_hull(va, na, ta, 128), ntb = brute_hull(vb, nb, tb, 128);
+        TU_ENSURE(nta > 0 && ntb > 0, "hull failed");
+        agjk_pose pa = tu_random_pose(&rng, 1.0), pb = tu_random_pose(&rng, 1.0);
+        double target = targets[i % N_TARGETS];
+        TU_CHECK_INT_EQ(tu_set_distance(&a, &pa, &b, &pb, target, NULL), 0);
+        /* ref_make_agjk (in run_pair) rebuilds a.polytope from the vertices;
+         * build the adjacency into our own copies and attach it after. */
+        agjk_polytope qa, qb;
+        memset(&qa, 0, sizeof qa);
+        memset(&qb, 0, sizeof qb);
+        qa.vertices = va; qa.vertex_count = na;
+        qb.vertices = vb; qb.vertex_count = nb;
+        TU_CHECK_INT_EQ(agjk_polytope_build_adjacency(&qa, ta, nta), AGJK_STATUS_OK);
+        TU_CHECK_INT_EQ(agjk_polytope_build_adjacency(&qb, tb, ntb), AGJK_STATUS_OK);
+        adjacency_a = &qa;
+        adjacency_b = &qb;
+        run_pair(&a, &pa, &b, &pb, target, "hill-climbing polytopes", i, &tl);
+        adjacency_a = adjacency_b = NULL;
+        agjk_polytope_free_adjacency(&qa);
+        agjk_polytope_free_adjacency(&qb);
+    }
+    report("hill-climbing polytopes", &tl);
+}
+END_TEST
+
+START_TEST(warm_start) {
+    /* A warm start (initial direction = the previous x*, hints from the
+     * previous result) after a small motion changes nothing but the work:
+     * the answer stays certified-correct; a bad warm start too. */
+    tu_rng rng;
+    tu_rng_seed(&rng, 45);
+    static agjk_vec3 va[MAX_VERTS], vb[MAX_VERTS];
+    long cold_it = 0, warm_it = 0;
+    int n = 0;
+    for (int i = 0; i < 200; i++) {
+        ref_shape a, b;
+        double sc = tu_paper_scale(&rng);
+        if (i % 2) {
+            tu_random_ellipsoid(&rng, &a, sc);
+            tu_random_ellipsoid(&rng, &b, sc);
+        } else {
+            tu_random_polytope(&rng, &a, va, 8 + (int)tu_uniform_int(&rng, MAX_VERTS - 8), sc);
+            tu_random_polytope(&rng, &b, vb, 8 + (int)tu_uniform_int(&rng, MAX_VERTS - 8), sc);
+        }
+        agjk_pose pa = tu_random_pose(&rng, 1.0), pb = tu_random_pose(&rng, 1.0);
+        double target = targets[i % N_TARGETS];
+        TU_CHECK_INT_EQ(tu_set_distance(&a, &pa, &b, &pb, target, NULL), 0);
+        agjk_shape sa, sb;
+        TU_CHECK_INT_EQ(ref_make_agjk(&a, &sa), AGJK_STATUS_OK);
+        TU_CHECK_INT_EQ(ref_make_agjk(&b, &sb), AGJK_STATUS_OK);
+        for (int m = 0; m < 4; m++) { /* FW excluded: its cap makes the counts noisy */
+            agjk_options o = agjk_default_options();
+            o.method = core_methods[m];
+            agjk_result first, cold, warm;
+            agjk_distance(&sa, &pa, &sb, &pb, &o, &first);
+            /* move B a little (coherent motion), then query cold and warm */
+            agjk_pose pb2 = pb;
+            tu_pose_translate(&pb2, tu_scale(tu_unit_vector(&rng), 1e-3 * sc));
+            ref_result ref;
+            ref_distance(&a, &pa, &b, &pb2, &ref);
+            truth_interval t = truth_from_reference(&ref);
+            double eps = 1e-12 * (tu_bounding_radius(&a) + tu_bounding_radius(&b));
+            agjk_distance(&sa, &pa, &sb, &pb2, &o, &cold);
+            agjk_options w = o;
+            w.use_initial_direction = 1;
+            w.initial_direction = first.status == AGJK_STATUS_SEPARATED
+                                      ? tu_scale(first.normal, -first.distance)
+                                      : tu_sub(pa.translation, pb2.translation);
+            w.hint_a = first.hint_a;
+            w.hint_b = first.hint_b;
+            agjk_distance(&sa, &pa, &sb, &pb2, &w, &warm);
+            char why[256];
+            TU_ENSURE(check_distance_result(&warm, t, eps, 0, why, sizeof why) == 0,
+                      "warm start %d %s: %s", i, agjk_method_name(o.method), why);
+            if (first.status == AGJK_STATUS_SEPARATED) {
+                cold_it += cold.iterations;
+                warm_it += warm.iterations;
+                n++;
+            }
+            /* a bad guess (random direction, garbage hints) must still be right */
+            w.initial_direction = tu_scale(tu_unit_vector(&rng), 3.0 * sc);
+            w.hint_a = 123456;
+            w.hint_b = -9;
+            agjk_distance(&sa, &pa, &sb, &pb2, &w, &warm);
+            TU_ENSURE(check_distance_result(&warm, t, eps, 0, why, sizeof why) == 0,
+                      "bad warm start %d %s: %s", i, agjk_method_name(o.method), why);
+        }
+    }
+    printf("warm start: mean iterations on separated pairs after a 1e-3 move: cold %.2f, warm %.2f\n",
+           (double)cold_it / n, (double)warm_it / n);
+}
+END_TEST
+
 int main(void) {
     Suite *s = suite_create("methods");
     TU_ADD(s, ellipsoids);
     TU_ADD(s, polytopes);
     TU_ADD(s, mixed_shapes_with_margins);
+    TU_ADD(s, polytopes_hill_climbing);
+    TU_ADD(s, warm_start);
     return tu_run_suite(s);
 }

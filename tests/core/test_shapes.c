@@ -10,6 +10,8 @@
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
+#include "agjk/polytope.h"
+#include "brute_hull.h"
 #include "check_main.h"
 #include "reference.h"
 #include "testutil.h"
@@ -275,10 +277,80 @@ START_TEST(polytope_rejects_bad_vertices) {
 }
 END_TEST
 
+START_TEST(polytope_hill_climbing) {
+    /* Hill climbing over the hull's edge graph (adjacency built from the
+     * brute-force hull) must find the same support value as a scan, from
+     * any hint, including out-of-range hints, and along a coherent sequence
+     * of directions that carries the hint. */
+    tu_rng rng;
+    tu_rng_seed(&rng, 22);
+    static agjk_vec3 verts[72];
+    static int32_t tris[3 * 2 * 72];
+    for (int rep = 0; rep < 20; rep++) {
+        ref_shape s;
+        int n = 32 + (int)tu_uniform_int(&rng, 40);
+        tu_random_polytope(&rng, &s, verts, n, tu_paper_scale(&rng));
+        int nt = brute_hull(verts, n, tris, 2 * 72);
+        TU_ENSURE(nt == 2 * n - 4, "hull of %d points on an ellipsoid: %d triangles", n, nt);
+        agjk_polytope poly;
+        memset(&poly, 0, sizeof poly);
+        poly.vertices = verts;
+        poly.vertex_count = n;
+        TU_CHECK_INT_EQ(agjk_polytope_build_adjacency(&poly, tris, nt), AGJK_STATUS_OK);
+        agjk_shape shape;
+        TU_CHECK_INT_EQ(agjk_shape_polytope(&shape, &poly), AGJK_STATUS_OK);
+        double size = tu_bounding_radius(&s);
+        agjk_vec3 d = tu_unit_vector(&rng), axis = tu_unit_vector(&rng);
+        int carried = 0;
+        for (int i = 0; i < 1000; i++) {
+            int hint;
+            if (i % 2) {
+                /* coherent: rotate d a little about a fixed axis, keep the hint */
+                d = tu_add(d, tu_scale(tu_cross(axis, d), 0.05));
+                d = tu_scale(d, 1.0 / tu_norm(d));
+                hint = carried;
+            } else {
+                d = tu_unit_vector(&rng);
+                hint = (i % 10 == 0) ? (i % 20 == 0 ? -7 : n + 5) : (int)tu_uniform_int(&rng, (uint32_t)n);
+            }
+            agjk_vec3 sup;
+            shape.support(shape.data, &d, &sup, &hint);
+            long double dl[3] = {d.x, d.y, d.z}, rs[3];
+            ref_support_local(&s, dl, rs);
+            double h_ref = (double)(dl[0] * rs[0] + dl[1] * rs[1] + dl[2] * rs[2]);
+            TU_ENSURE(fabs(tu_dot(d, sup) - h_ref) <= 1e-14 * size,
+                      "polytope %d (n=%d) dir %d: hill climbing h = %.17g, scan %.17g", rep, n, i,
+                      tu_dot(d, sup), h_ref);
+            TU_ENSURE(hint >= 0 && hint < n, "polytope %d dir %d: hint %d out of range", rep, i, hint);
+            carried = hint;
+        }
+        agjk_polytope_free_adjacency(&poly);
+    }
+}
+END_TEST
+
+START_TEST(brute_hull_itself) {
+    /* The test's hull: a cube's 8 corners give 12 triangles, an octahedron 8. */
+    agjk_vec3 cube[8];
+    int32_t tris[3 * 64];
+    for (int k = 0; k < 8; k++) cube[k] = tu_vec(k & 1 ? 1 : -1, k & 2 ? 1.1 : -1.1, k & 4 ? 0.9 : -0.9);
+    /* a cube's faces are planar quads: 4 coplanar points, not general position */
+    TU_CHECK_INT_EQ(brute_hull(cube, 8, tris, 64), -1);
+    agjk_vec3 octa[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+    TU_CHECK_INT_EQ(brute_hull(octa, 6, tris, 64), 8);
+    agjk_vec3 tet[5] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {0.1, 0.1, 0.1}};
+    TU_CHECK_INT_EQ(brute_hull(tet, 5, tris, 64), 4); /* the interior point is on no face */
+    for (int t = 0; t < 4; t++)
+        for (int c = 0; c < 3; c++) TU_CHECK(tris[3 * t + c] != 4);
+}
+END_TEST
+
 int main(void) {
     Suite *s = suite_create("shapes");
     TU_ADD(s, builtin_shapes);
     TU_ADD(s, constructors_reject_bad_sizes);
     TU_ADD(s, polytope_rejects_bad_vertices);
+    TU_ADD(s, brute_hull_itself);
+    TU_ADD(s, polytope_hill_climbing);
     return tu_run_suite(s);
 }
