@@ -11,6 +11,11 @@ BENCH_LIB_SRCS := rng.c problems.c nesmino.c solve.c evaluate.c stats.c guard.c 
 BENCH_LIB_OBJS := $(BENCH_LIB_SRCS:%.c=$(OUT)/tools/bench/%.o)
 BENCH_LIB      := $(OUT)/tools/bench/libbench.a
 BENCH_BIN      := $(OUT)/tools/bench/agjk-bench
+# Hulls with hill-climbing adjacency come from tools/mesh (helper B's Qhull
+# wrapper); its fragment is read after this one, so its archive is named here.
+BENCH_MESH_LIB := $(OUT)/tools/mesh/libagjkmesh.a
+BENCH_MESH_CPPFLAGS := -Itools/mesh
+BENCH_MESH_LIBS := $(or $(shell $(PKG_CONFIG) --libs assimp qhull_r 2>/dev/null),-lassimp -lqhull_r)
 BENCH_HDRS     := $(wildcard tools/bench/*.h)
 BENCH_CCD_CFLAGS := $(shell $(PKG_CONFIG) --cflags ccd)
 BENCH_CCD_LIBS   := $(shell $(PKG_CONFIG) --libs ccd)
@@ -26,9 +31,16 @@ $(BENCH_LIB): $(BENCH_LIB_OBJS)
 	@rm -f $@
 	$(AR) rcs $@ $^
 
-$(BENCH_BIN): $(OUT)/tools/bench/main.o $(BENCH_LIB) $(OUT)/tests/common/libtestcommon.a $(LIB_A)
-	$(CC) $(ALL_CFLAGS) -o $@ $(OUT)/tools/bench/main.o $(BENCH_LIB) \
-	    $(OUT)/tests/common/libtestcommon.a $(LIB_A) $(BENCH_CCD_LIBS) -lm
+$(OUT)/tools/bench/hull_support.o: tools/bench/hull_support.c $(BENCH_HDRS) $(HEADERS) \
+                                   tools/mesh/mesh.h
+	@mkdir -p $(dir $@)
+	$(CC) $(ALL_CPPFLAGS) $(BENCH_MESH_CPPFLAGS) $(ALL_CFLAGS) -c $< -o $@
+
+$(BENCH_BIN): $(OUT)/tools/bench/main.o $(OUT)/tools/bench/hull_support.o $(BENCH_LIB) \
+              $(BENCH_MESH_LIB) $(OUT)/tests/common/libtestcommon.a $(LIB_A)
+	$(CC) $(ALL_CFLAGS) -o $@ $(OUT)/tools/bench/main.o $(OUT)/tools/bench/hull_support.o \
+	    $(BENCH_LIB) $(BENCH_MESH_LIB) $(OUT)/tests/common/libtestcommon.a $(LIB_A) \
+	    $(BENCH_MESH_LIBS) $(BENCH_CCD_LIBS) -lm
 
 TOOL_BINS += $(BENCH_BIN)
 

@@ -10,6 +10,7 @@
 #include "bench.h"
 #include "ccd_adapter.h"
 #include "guard.h"
+#include "hull_support.h"
 #include "mesh_io.h"
 #include "nesmino.h"
 
@@ -35,6 +36,8 @@ static void usage(FILE *f) {
         "  --relative        read tolerances as relative (AGJK_TOLERANCE_RELATIVE: g <= T ||x||^2)\n"
         "                    for agjk's methods; default absolute, as in the paper\n"
         "  --nesmino-mu MU   NESMINO smoothing parameter (default 0: infinite, see nesmino.h)\n"
+        "  --scan-support    polytopes without adjacency: every support call scans all\n"
+        "                    vertices (default: Qhull hull + hill climbing, as HPP-FCL)\n"
         "  --mesh-dir DIR    also benchmark the meshes (OBJ/OFF) found in DIR\n"
         "  --max-meshes K    read at most K meshes (default 1000)\n"
         "  --mesh-scale S    multiply mesh coordinates by S (default 0.1: the pybullet\n"
@@ -80,6 +83,7 @@ static int parse(int argc, char **argv, bench_config *c) {
         INT_OPT("--max-meshes", max_meshes)
 #undef INT_OPT
         if (strcmp(a, "--relative") == 0) { c->relative = 1; continue; }
+        if (strcmp(a, "--scan-support") == 0) { c->scan_support = 1; continue; }
         if (strcmp(a, "--tolerance") == 0 && v) { c->tolerance = atof(v); ++i; continue; }
         if (strcmp(a, "--nesmino-mu") == 0 && v) { c->nesmino_mu = atof(v); ++i; continue; }
         if (strcmp(a, "--mesh-scale") == 0 && v) { c->mesh_scale = atof(v); ++i; continue; }
@@ -287,6 +291,10 @@ int main(int argc, char **argv) {
                                          4 * cfg.hull_pairs * cfg.hull_poses +
                                          cfg.mesh_pairs * cfg.mesh_poses);
     bench_set_init(&set, cap_shapes, cap_problems);
+    if (!cfg.scan_support) {
+        set.polytope_hook = bench_hull_hook;
+        set.aux_free = bench_hull_free;
+    }
 
     fprintf(stderr, "agjk-bench %s: seed %llu; generating problems and reference distances\n",
             agjk_version_string(), (unsigned long long)cfg.seed);

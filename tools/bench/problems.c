@@ -40,7 +40,10 @@ void bench_set_init(bench_set *set, int shape_capacity, int problem_capacity) {
 
 void bench_set_free(bench_set *set) {
     int i;
-    for (i = 0; i < set->shape_count; ++i) free(set->shapes[i].vertices);
+    for (i = 0; i < set->shape_count; ++i) {
+        free(set->shapes[i].vertices);
+        if (set->shapes[i].aux && set->aux_free) set->aux_free(set->shapes[i].aux);
+    }
     free(set->shapes);
     free(set->problems);
     memset(set, 0, sizeof *set);
@@ -151,6 +154,7 @@ static int make_shape(bench_set *set, int family, int hull_n, const bench_mesh_s
         }
     }
     bench_shape_finish(s);
+    if (s->kind == REF_POLYTOPE && set->polytope_hook) set->polytope_hook(s);
     return set->shape_count - 1;
 }
 

@@ -44,7 +44,15 @@ typedef struct bench_shape {
     agjk_polytope polytope;
     agjk_shape shape;
     ref_shape ref;
+    void *aux;                /* owned by the set's polytope hook (a hull), or NULL */
 } bench_shape;
+
+struct bench_set;
+/* Optional hook run on every new polytope shape: may replace s->polytope (e.g.
+ * by a hull with hill-climbing adjacency) and rebuild s->shape, and keep what
+ * it allocated in s->aux. The reference keeps the original vertices. */
+typedef void (*bench_polytope_hook)(bench_shape *s);
+typedef void (*bench_aux_free)(void *aux);
 
 typedef struct bench_problem {
     int family, pair, pose, target_index, category;
@@ -67,6 +75,8 @@ typedef struct bench_set {
     int skipped_pairs;        /* pairs for which no disjoint pose was found */
     int ref_stalled;          /* references not converged but with tight bounds (kept) */
     double max_target_deviation; /* max |d_ref - target| / scale over target > 0 */
+    bench_polytope_hook polytope_hook; /* NULL: scan support over the vertices */
+    bench_aux_free aux_free;
     double scale;             /* length scale of the next generated problems (default 1):
                                  sizes, translations and signed distances are multiplied */
 } bench_set;

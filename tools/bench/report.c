@@ -425,7 +425,8 @@ int bench_write_reports(const bench_report *r) {
                 "gap), at most %d iterations (FW, NESMINO: %d). Times: per problem, the mean of "
                 "the fastest 90%% of R = %d runs (FW, NESMINO: R = %d, on the first pose of the "
                 "first %d pairs); tables give mean +- std over problems. The machine is shared: "
-                "compare methods within this run, not with other runs. Phase times: "
+                "compare methods within this run, not with other runs. Polytope support: %s. "
+                "Phase times: "
                 "problems+reference %.0f s, queries %.0f s, work-precision %.0f s, libccd "
                 "%.0f s; total %.0f s.\n\n",
             r->cfg->command_line, agjk_version_string(), date,
@@ -434,7 +435,11 @@ int bench_write_reports(const bench_report *r) {
             r->cfg->hull_poses, r->mesh_note[0] ? "; meshes: " : "", r->mesh_note,
             r->cfg->tolerance, r->cfg->relative ? "relative: g <= tol ||x||^2" : "absolute",
             r->cfg->max_iterations, r->cfg->slow_max_iterations,
-            r->cfg->reps, r->cfg->slow_reps, r->cfg->slow_pairs, r->seconds[0], r->seconds[1],
+            r->cfg->reps, r->cfg->slow_reps, r->cfg->slow_pairs,
+            r->cfg->scan_support ? "scan over all vertices"
+                                 : "hill climbing on the Qhull hull's vertex graph (agjk "
+                                   "scans small hulls itself)",
+            r->seconds[0], r->seconds[1],
             r->seconds[2], r->seconds[3], r->seconds[4]);
 
     {
