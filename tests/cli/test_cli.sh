@@ -355,6 +355,10 @@ expect_error "iterations huge" distance "$C" "$C" --max-iterations 9999999999999
 expect_error "scale zero" distance "$C" "$C" --scale-a 0
 expect_error "scale negative" distance "$C" "$C" --scale-b -2
 expect_error "scale overflow" distance "$C" "$tmp/arrow.off" --scale-b 1e308
+expect_error "scale beyond range" distance "$C" "$tmp/arrow.off" --scale-b 1e50
+expect_error "translation beyond range" distance "$C" "$C" --pose-b 1e51 0 0 1 0 0 0
+printf 'v 0 0 0\nv 1e60 0 0\nv 0 1 0\nv 0 0 1\nf 1 2 3\nf 1 2 4\n' >"$tmp/far.obj"
+expect_error "vertex beyond range" distance "$tmp/far.obj" "$C"
 expect_error "json on hull" hull "$C" -o "$tmp/x.off" --json
 expect_error "timeout negative" info "$C" --timeout -1
 

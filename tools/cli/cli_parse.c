@@ -82,6 +82,12 @@ static int parse_pose(char **values, const char *option, agjk_pose *pose) {
             return 0;
         }
     }
+    for (int i = 0; i < 3; i++)
+        if (!(fabs(v[i]) <= AGJK_MAX_COORDINATE)) {
+            cli_error("%s: translation %s is beyond the library's coordinate range (%g)", option,
+                      values[i], AGJK_MAX_COORDINATE);
+            return 0;
+        }
     double norm = sqrt(v[3] * v[3] + v[4] * v[4] + v[5] * v[5] + v[6] * v[6]);
     if (!(fabs(norm - 1.0) <= QUATERNION_NORM_TOLERANCE)) {
         cli_error("%s: quaternion (%s %s %s %s) has norm %.9g, not 1 (qw qx qy qz must be a "

@@ -21,8 +21,20 @@ int cli_shape_load(const char *path, double scale, int with_adjacency, cli_shape
         p->x *= scale;
         p->y *= scale;
         p->z *= scale;
-        if (!isfinite(p->x) || !isfinite(p->y) || !isfinite(p->z)) {
-            cli_error("%s: vertex %zu overflows when scaled by %g", path, i, scale);
+        if (!(fabs(p->x) <= AGJK_MAX_COORDINATE && fabs(p->y) <= AGJK_MAX_COORDINATE &&
+              fabs(p->z) <= AGJK_MAX_COORDINATE)) {
+            cli_error("%s: vertex %zu scaled by %g is beyond the library's coordinate range "
+                      "(%g)", path, i, scale, AGJK_MAX_COORDINATE);
+            mesh_points_free(&s->points);
+            return 0;
+        }
+    }
+    for (size_t i = 0; i < s->points.count; i++) {
+        const agjk_vec3 *p = &s->points.points[i];
+        if (!(fabs(p->x) <= AGJK_MAX_COORDINATE && fabs(p->y) <= AGJK_MAX_COORDINATE &&
+              fabs(p->z) <= AGJK_MAX_COORDINATE)) {
+            cli_error("%s: vertex %zu is beyond the library's coordinate range (%g)", path, i,
+                      AGJK_MAX_COORDINATE);
             mesh_points_free(&s->points);
             return 0;
         }
@@ -34,7 +46,7 @@ int cli_shape_load(const char *path, double scale, int with_adjacency, cli_shape
         return 0;
     }
     if (agjk_shape_polytope(&s->shape, &s->hull.polytope) != AGJK_STATUS_OK) {
-        /* Cannot happen for finite points and our adjacency: a bug, say so. */
+        /* Finite points in range and our own adjacency: this is a bug, say so. */
         cli_error("%s: the library rejected the hull as a polytope (internal error)", path);
         cli_shape_free(s);
         return 0;
