@@ -196,6 +196,22 @@ int ref_distance(const ref_shape *a, const agjk_pose *pose_a, const ref_shape *b
         if (sn > scale) scale = sn;
         ref_real lk = rv_dot(x, s.w) / nx;
         if (lk > lower) lower = lk;
+        if (n == 3 && upper - lower > REF_REL_TOL * scale) {
+            /* A second certificate from the plane of the current triangle.
+             * When |x| << size, x carries an absolute rounding error of
+             * ~eps * size, so its direction is off by eps * size / |x| and
+             * the plane with normal x under-certifies by that angle times the
+             * face's extent (1e-14 of the size at |x| = 1e-7). The cross
+             * product of two edges is accurate to eps in direction. */
+            ref_v3 nrm = rv_cross(rv_sub(simplex[1].w, simplex[0].w), rv_sub(simplex[2].w, simplex[0].w));
+            ref_real nn = ref_v3_norm(nrm);
+            if (nn > 0.0L) {
+                if (rv_dot(nrm, x) < 0.0L) nrm = rv_scale(nrm, -1.0L);
+                nrm = rv_scale(nrm, 1.0L / nn);
+                ref_real lp = rv_dot(nrm, support_d(&pr, rv_scale(nrm, -1.0L)).w);
+                if (lp > lower) lower = lp;
+            }
+        }
         if (upper - lower <= REF_REL_TOL * scale) {
             out->converged = 1;
             break;

@@ -53,7 +53,14 @@ typedef struct ref_result {
 /* Builds the agjk_shape for `s` (pointing into s's own storage, so `s` must outlive it). */
 agjk_status ref_make_agjk(ref_shape *s, agjk_shape *out);
 
-/* Reference distance; returns 0 on success (converged or intersecting). */
+/* Reference distance; returns 0 on success (converged or intersecting).
+ * Converged means upper - lower <= 1e-15 x scale. The bounds are certified
+ * even when it is not reached; measured misses (seed 99, 1600 pairs each):
+ * none for ellipsoids (also 1e5:1 stiff ones), boxes, capsules, margins at
+ * 1e-8 ... 5; 25 of 1600 polytope pairs (500 vertices) at distance 1e-8 x
+ * size stop with upper - lower <= 1.4e-14 x scale (edge simplex, the
+ * direction of x limited by long double when |x| << size); cylinder-cone
+ * pairs at 1e-8 ... 1e-6 may stall at up to 3e-12 x scale. Use lower/upper. */
 int ref_distance(const ref_shape *a, const agjk_pose *pose_a,
                  const ref_shape *b, const agjk_pose *pose_b, ref_result *out);
 
