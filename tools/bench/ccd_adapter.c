@@ -1,14 +1,9 @@
 /* SPDX-License-Identifier: MIT */
 #include "ccd_adapter.h"
 
-#include <ccd/ccd.h>
 #include <stdio.h>
 
-typedef struct ccd_obj {
-    const bench_shape *shape;
-    const agjk_pose *pose;
-    int *hint; /* warm-start hint of agjk's callback (written through the pointer) */
-} ccd_obj;
+typedef bench_ccd_object ccd_obj;
 
 int bench_ccd_check(void) {
     if (sizeof(ccd_real_t) != sizeof(double)) {
@@ -42,22 +37,32 @@ static void ccd_center(const void *obj, ccd_vec3_t *c) {
     c->v[2] = o->pose->translation.z;
 }
 
+void bench_ccd_prepare(bench_ccd_query *q, const bench_set *set, const bench_problem *p,
+                       unsigned long max_iterations) {
+    q->hint_a = q->hint_b = 0;
+    q->a.shape = &set->shapes[p->a];
+    q->a.pose = &p->pose_a;
+    q->a.hint = &q->hint_a;
+    q->b.shape = &set->shapes[p->b];
+    q->b.pose = &p->pose_b;
+    q->b.hint = &q->hint_b;
+    CCD_INIT(&q->ccd);
+    q->ccd.support1 = ccd_support;
+    q->ccd.support2 = ccd_support;
+    q->ccd.center1 = ccd_center;
+    q->ccd.center2 = ccd_center;
+    q->ccd.max_iterations = max_iterations;
+}
+
+int bench_ccd_run(bench_ccd_query *q, int algorithm) {
+    q->hint_a = q->hint_b = 0;
+    return algorithm == CCD_MPR ? ccdMPRIntersect(&q->a, &q->b, &q->ccd)
+                                : ccdGJKIntersect(&q->a, &q->b, &q->ccd);
+}
+
 int bench_ccd_intersect(const bench_set *set, const bench_problem *p, int algorithm,
                         unsigned long max_iterations) {
-    ccd_t ccd;
-    int hint_a = 0, hint_b = 0;
-    ccd_obj a, b;
-    a.shape = &set->shapes[p->a];
-    a.pose = &p->pose_a;
-    a.hint = &hint_a;
-    b.shape = &set->shapes[p->b];
-    b.pose = &p->pose_b;
-    b.hint = &hint_b;
-    CCD_INIT(&ccd);
-    ccd.support1 = ccd_support;
-    ccd.support2 = ccd_support;
-    ccd.center1 = ccd_center;
-    ccd.center2 = ccd_center;
-    ccd.max_iterations = max_iterations;
-    return algorithm == CCD_MPR ? ccdMPRIntersect(&a, &b, &ccd) : ccdGJKIntersect(&a, &b, &ccd);
+    bench_ccd_query q;
+    bench_ccd_prepare(&q, set, p, max_iterations);
+    return bench_ccd_run(&q, algorithm);
 }
