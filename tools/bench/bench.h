@@ -39,6 +39,7 @@ typedef struct bench_report {
     const unsigned char *ccd_outcome;
     int ccd_count;             /* 0: no libccd part */
     double seconds[6];         /* phase wall times */
+    double clock_overhead_ns;  /* cost of an empty timed region (included in all times) */
     const char *mesh_note;
 } bench_report;
 

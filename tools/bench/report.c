@@ -425,7 +425,9 @@ int bench_write_reports(const bench_report *r) {
                 "gap), at most %d iterations (FW, NESMINO: %d). Times: per problem, the mean of "
                 "the fastest 90%% of R = %d runs (FW, NESMINO: R = %d, on the first pose of the "
                 "first %d pairs); tables give mean +- std over problems. The machine is shared: "
-                "compare methods within this run, not with other runs. Polytope support: %s. "
+                "compare methods within this run, not with other runs. Each run is timed alone; "
+                "an empty timed region costs %.0f ns, included in every time. Polytope support: "
+                "%s. "
                 "Phase times: "
                 "problems+reference %.0f s, queries %.0f s, work-precision %.0f s, libccd "
                 "%.0f s; total %.0f s.\n\n",
@@ -435,7 +437,7 @@ int bench_write_reports(const bench_report *r) {
             r->cfg->hull_poses, r->mesh_note[0] ? "; meshes: " : "", r->mesh_note,
             r->cfg->tolerance, r->cfg->relative ? "relative: g <= tol ||x||^2" : "absolute",
             r->cfg->max_iterations, r->cfg->slow_max_iterations,
-            r->cfg->reps, r->cfg->slow_reps, r->cfg->slow_pairs,
+            r->cfg->reps, r->cfg->slow_reps, r->cfg->slow_pairs, r->clock_overhead_ns,
             r->cfg->scan_support ? "scan over all vertices"
                                  : "hill climbing on the Qhull hull's vertex graph (agjk "
                                    "scans small hulls itself)",
