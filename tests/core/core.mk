@@ -17,3 +17,8 @@ TOOL_BINS += $(CORE_TOOL_BINS)
 .PHONY: check-core
 check-core: $(CORE_TEST_BINS) $(OUT)/tests/common/test_reference
 	@fail=0; for t in $^; do echo "== $$t"; ./$$t || fail=1; done; test $$fail -eq 0
+
+# Mutation check: every deliberate bug in a copy of src/ must fail some test.
+.PHONY: mutants-core
+mutants-core: $(OUT)/tests/common/libtestcommon.a
+	tests/core/mutants.sh $(OUT)

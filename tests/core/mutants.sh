@@ -1,0 +1,58 @@
+#!/bin/sh
+# SPDX-License-Identifier: MIT
+# Mutation check of tests/core: builds copies of the library with one
+# deliberate bug each (in a temporary directory; the tree is not touched) and
+# runs the core tests against each copy. Every mutant must be caught by at
+# least one test, or the tests cannot see that kind of bug. A mutant whose
+# pattern no longer matches src/ is reported as "not applied" (update it).
+# Not part of `make check` (about a minute): run `make mutants-core`.
+#   usage: tests/core/mutants.sh [OUT]   (OUT: the build dir, default out)
+set -u
+OUT=${1:-out}
+ROOT=$(pwd)
+CC=${CC:-cc}
+CHECK_FLAGS=$(pkg-config --cflags --libs check)
+COMMON=$ROOT/$OUT/tests/common/libtestcommon.a
+TMP=$(mktemp -d)
+trap 'rm -rf "$TMP"' EXIT
+[ -f "$COMMON" ] || { echo "build $COMMON first (make $OUT/tests/common/libtestcommon.a)"; exit 2; }
+
+# name | file | sed expression (the bug)
+MUTANTS='
+separating-plane-epsilon|src/solver.c|s/return v3_dot(d, w) > v3_norm(d) \* (md->margin + noise_scale(md));/return v3_dot(d, w) > v3_norm(d) * (md->margin - 1e-7);/
+separated-without-certificate|src/query.c|s/status = lower > md.margin ? AGJK_STATUS_SEPARATED/status = core > md.margin ? AGJK_STATUS_SEPARATED/
+bound-too-small|src/query.c|s/result->bound = distance - low;/result->bound = 0.1 * (distance - low);/
+ellipsoid-radius-typo|src/shape_ellipsoid.c|s/e->radii.z \* ddn.z \/ norm/e->radii.y * ddn.z \/ norm/
+relative-tolerance-ignores-margins|src/solver.c|s/double gap = x_norm - md->margin;/double gap = x_norm;/
+witness-without-margin|src/query.c|s/agjk_vec3 wa = v3_add(out.a, v3_scale(n_local, md.margin_a));/agjk_vec3 wa = out.a;/
+simplex-origin-on-face-not-inside|src/simplex.c|s/return (mask == 0xFu || v3_norm2(point) == 0.0) ? AGJK_STATUS_INTERSECTING/return (mask == 0xFu) ? AGJK_STATUS_INTERSECTING/
+simplex-weights-permuted|src/simplex.c|s/projection->weights\[i\] = lambda\[i\];/projection->weights[i] = lambda[count - 1 - i];/
+cone-support-biased|src/shape_cone.c|s/v3_dot(\*direction, apex) >= v3_dot(\*direction, rim)/v3_dot(*direction, apex) >= 0.9 * v3_dot(*direction, rim)/
+hill-climb-stops-early|src/shape_polytope.c|s/        if (next == current) break;/        if (next == current || steps > 2) break;/
+rotation-check-loose|src/minkowski.c|s/#define ROTATION_TOLERANCE 1e-6/#define ROTATION_TOLERANCE 1e-1/
+'
+TESTS="simplex shapes api analytic methods properties collide"
+escaped=0
+echo "$MUTANTS" | while IFS='|' read -r name file expr; do
+    [ -n "$name" ] || continue
+    d=$TMP/$name
+    mkdir -p "$d"
+    cp -r "$ROOT/src" "$ROOT/include" "$d/"
+    sed -i "$expr" "$d/$file"
+    if cmp -s "$ROOT/$file" "$d/$file"; then echo "$name: not applied (pattern gone from $file)"; continue; fi
+    ok=1
+    for f in "$d"/src/*.c; do
+        $CC -std=c99 -O2 -ffp-contract=off -I"$d/include" -c "$f" -o "${f%.c}.o" || ok=0
+    done
+    [ $ok = 1 ] || { echo "$name: does not build"; continue; }
+    ar rcs "$d/libagjk.a" "$d"/src/*.o
+    caught=""
+    for t in $TESTS; do
+        $CC -std=c99 -O2 -D_POSIX_C_SOURCE=200809L -I"$ROOT/include" -I"$ROOT/tests/common" \
+            "$ROOT/tests/core/test_$t.c" -o "$d/test_$t" "$COMMON" "$d/libagjk.a" $CHECK_FLAGS -lm
+        if ! "$d/test_$t" >/dev/null 2>&1; then caught="$caught $t"; fi
+    done
+    if [ -n "$caught" ]; then echo "$name: caught by$caught"; else echo "$name: ESCAPED"; echo x >> "$TMP/escaped"; fi
+done
+if [ -f "$TMP/escaped" ]; then echo "some mutants escaped the tests"; exit 1; fi
+echo "all applied mutants caught"
