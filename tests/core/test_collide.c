@@ -93,6 +93,11 @@ static void run_target(tu_rng *rng, double target, agjk_tolerance_mode mode, dou
             agjk_result r;
             agjk_status st = agjk_collide(&sa, &pa, &sb, &pb, &o, &r);
             tl->queries++;
+            /* query.h: the Boolean query computes no witness points and no
+             * distance (types.h: "agjk_collide leaves it 0"). */
+            TU_ENSURE(r.distance == 0.0 && r.bound == 0.0 && tu_norm(r.witness_a) == 0.0 &&
+                          tu_norm(r.witness_b) == 0.0,
+                      "collide wrote distance %g, bound %g or witnesses", r.distance, r.bound);
             int wrong = 0;
             const char *why = "";
             if (st == AGJK_STATUS_SEPARATED) {

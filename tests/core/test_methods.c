@@ -65,6 +65,26 @@ static void run_pair(ref_shape *a, const agjk_pose *pa, ref_shape *b, const agjk
             double want_gap = mode == 1 ? o.tolerance * r.distance * r.distance : o.tolerance;
             int fw = o.method == AGJK_METHOD_FRANK_WOLFE || want_gap < 1e-14 * size * size;
             if (mode == 0 && (unsigned)r.status < 5) tl->status[m][r.status]++;
+            /* Counters (types.h): each iteration computes one or two supports,
+             * plus at most one to certify the final iterate; momentum can only
+             * be switched off by the momentum methods, during the run. */
+            TU_ENSURE(r.iterations >= 1 && r.iterations <= o.max_iterations &&
+                          r.support_calls >= r.iterations && r.support_calls <= 2 * r.iterations + 1,
+                      "%s %d %s: %d iterations, %d support calls", what, i,
+                      agjk_method_name(o.method), (int)r.iterations, (int)r.support_calls);
+            if (o.method == AGJK_METHOD_GJK || o.method == AGJK_METHOD_FRANK_WOLFE)
+                TU_ENSURE(r.momentum_stop_iteration == -1, "%s %d %s: momentum stopped at %d", what,
+                          i, agjk_method_name(o.method), (int)r.momentum_stop_iteration);
+            else
+                TU_ENSURE(r.momentum_stop_iteration >= -1 && r.momentum_stop_iteration < r.iterations,
+                          "%s %d %s: momentum stopped at %d of %d iterations", what, i,
+                          agjk_method_name(o.method), (int)r.momentum_stop_iteration, (int)r.iterations);
+            if (a->kind == REF_POLYTOPE)
+                TU_ENSURE(r.hint_a >= 0 && r.hint_a < a->vertex_count, "%s %d: hint_a %d", what, i,
+                          (int)r.hint_a);
+            if (b->kind == REF_POLYTOPE)
+                TU_ENSURE(r.hint_b >= 0 && r.hint_b < b->vertex_count, "%s %d: hint_b %d", what, i,
+                          (int)r.hint_b);
             char why[256];
             const char *mn = agjk_method_name(o.method);
             TU_ENSURE(check_distance_result(&r, t, eps, fw, why, sizeof why) == 0,
