@@ -118,7 +118,9 @@ static agjk_status run(const agjk_shape *a, const agjk_pose *pose_a, const agjk_
     int converged = out.outcome == AGJK__CONVERGED ||
                     (out.outcome == AGJK__AT_FLOOR && !in.relative);
     agjk_status status;
-    if (converged)
+    if (out.outcome == AGJK__AT_ROUNDING)
+        status = AGJK_STATUS_CONTACT_WITHIN_TOLERANCE;
+    else if (converged)
         status = lower > md.margin ? AGJK_STATUS_SEPARATED : AGJK_STATUS_CONTACT_WITHIN_TOLERANCE;
     else
         status = AGJK_STATUS_NOT_CONVERGED;

@@ -39,6 +39,12 @@ static double requested_tolerance(const agjk__solve_input *in, const agjk__minko
  * of a support point. Below it the solver would only churn at the noise. */
 static double floor_tolerance(double x_norm2, double noise) { return 2.0 * sqrt(x_norm2) * noise; }
 
+/* Momentum pays off in the first few dozen iterations (paper, Fig. 4-6); past
+ * this many, a momentum direction that has not reached the Alg. 6 fallback is
+ * creeping (normalised momentum on smooth overlapping shapes can take ~1000
+ * iterations to reach g <= eps), and plain GJK finishes faster. */
+#define MOMENTUM_BUDGET 64
+
 /* Alg. 2: the plane of normal d through s separates D (inflated by the margins)
  * from the origin when <d, s> > ||d|| (margin + rounding). */
 static int separates(const agjk__minkowski *md, agjk_vec3 d, agjk_vec3 w) {
@@ -134,7 +140,16 @@ void agjk__solve(agjk__minkowski *md, const agjk__solve_input *in, agjk__solve_o
             double floor = floor_tolerance(x2, noise_scale(md));
             double tol = requested > floor ? requested : floor;
             double g = 2.0 * v3_dot(x, v3_sub(x, s.w)); /* eq. 29 */
-            if (m.active && g <= tol) {
+            /* Alg. 6 switches momentum off once g(x_k) <= eps. A relative
+             * tolerance shrinks with the distance and never fires on
+             * overlapping shapes, so momentum would creep on for ever: for
+             * this test use it as an absolute one at the problem's own scale. */
+            double fallback = tol;
+            if (in->relative) {
+                double scaled = in->tolerance * md->magnitude * md->magnitude;
+                if (scaled > fallback) fallback = scaled;
+            }
+            if (m.active && (g <= fallback || k >= MOMENTUM_BUDGET)) {
                 /* Alg. 6 lines 5-7: the momentum direction makes no progress. */
                 if (parallel(d, x)) {
                     out->gap = g;
@@ -177,9 +192,7 @@ void agjk__solve(agjk__minkowski *md, const agjk__solve_input *in, agjk__solve_o
             enclosed = update_simplex(simplex, &count, lambda, &s, &x_new);
         }
         double x_new2 = v3_norm2(x_new);
-        /* Plain directions must decrease ||x||; if rounding stops that, further
-         * iterations would only cycle. Momentum iterates may legitimately stay. */
-        int stalled = have_x && !m.active && !enclosed && x_new2 >= v3_norm2(x);
+        int no_progress = have_x && !enclosed && x_new2 >= v3_norm2(x);
         x = x_new;
         have_x = 1;
         out->gap_valid = 0;
@@ -188,15 +201,27 @@ void agjk__solve(agjk__minkowski *md, const agjk__solve_input *in, agjk__solve_o
             out->outcome = AGJK__INTERSECTING;
             break;
         }
-        if (stalled) { out->outcome = AGJK__STALLED; break; }
+        /* x is zero to rounding: the cores touch or overlap within what double
+         * precision can tell (plain FW creeps towards such an x forever). */
+        if (sqrt(x_new2) <= noise_scale(md)) { out->outcome = AGJK__AT_ROUNDING; break; }
+        if (no_progress) {
+            /* Plain directions must decrease ||x||; if rounding stops that,
+             * further iterations would only cycle. With momentum, no progress
+             * is the fixed point of eq. 28 (s_k adds nothing to the simplex):
+             * switch to GJK directions, even if g has not met the tolerance
+             * (a relative tolerance on overlapping shapes never does). */
+            if (!m.active) { out->outcome = AGJK__STALLED; break; }
+            m.active = 0;
+            out->momentum_stop = k;
+        }
         m.d_prev = d;
         m.s_prev = s.w;
     }
 
     /* Without a valid gap at the final iterate (cap, stall, or momentum still
      * on), one support in direction x certifies what was reached. */
-    if ((out->outcome == AGJK__ITERATION_CAP || out->outcome == AGJK__STALLED) && have_x &&
-        !out->gap_valid) {
+    if ((out->outcome == AGJK__ITERATION_CAP || out->outcome == AGJK__STALLED ||
+         out->outcome == AGJK__AT_ROUNDING) && have_x && !out->gap_valid) {
         agjk__minkowski_support(md, x, &s);
         ++out->support_calls;
         if (md->bad_support) {

@@ -27,6 +27,7 @@ typedef enum agjk__outcome {
     AGJK__SEPARATED_EARLY,/* Boolean mode: a separating plane was found */
     AGJK__ITERATION_CAP,
     AGJK__STALLED,        /* no decrease of ||x|| in floating point */
+    AGJK__AT_ROUNDING,    /* ||x|| below the rounding level: touching to rounding */
     AGJK__BAD_SUPPORT     /* a support callback returned a non-finite point */
 } agjk__outcome;
 

@@ -181,7 +181,9 @@ typedef struct agjk_result {
      *  0 when intersecting. agjk_collide leaves it 0. */
     double distance;
     /** Certified bound: the true distance lies in [max(0, distance - bound), distance].
-     *  Derived from the final gap (bound <= sqrt(gap)). agjk_collide leaves it 0. */
+     *  Derived from the final gap: bound <= min(sqrt(gap), gap / (2 ||x||)) plus a
+     *  rounding allowance of a few ulps of the problem's size. agjk_collide
+     *  leaves it 0. */
     double bound;
     /** Final Frank-Wolfe duality gap g = 2 <x, x - s> in length units squared. */
     double gap;
