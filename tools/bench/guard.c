@@ -33,6 +33,7 @@ static void child_main(int fd, int start, int n, size_t record_size, guard_case_
         fn(ctx, i, msg + sizeof(int));
         if (write_all(fd, msg, sizeof(int) + record_size) != 0) _exit(4);
     }
+    free(msg);
     _exit(0);
 }
 
@@ -71,6 +72,7 @@ int guard_run(int n, size_t record_size, guard_case_fn fn, void *ctx, void *reco
         if (pid < 0) { close(fds[0]); close(fds[1]); free(msg); return -1; }
         if (pid == 0) {
             close(fds[0]);
+            free(msg); /* the parent's buffer, copied by fork */
             child_main(fds[1], next, n, record_size, fn, ctx);
         }
         close(fds[1]);
