@@ -9,18 +9,22 @@
 int agjk__pose_is_valid(const agjk_pose *pose) {
     if (!pose || !v3_in_range(pose->translation)) return 0;
     const double *r = &pose->rotation[0][0]; /* row-major, r[3 * row + column] */
-    for (int i = 0; i < 9; ++i)
-        if (!isfinite(r[i])) return 0;
-    /* R R^T = I */
-    for (int i = 0; i < 3; ++i) {
-        for (int j = 0; j < 3; ++j) {
-            double dot = r[3 * i] * r[3 * j] + r[3 * i + 1] * r[3 * j + 1] + r[3 * i + 2] * r[3 * j + 2];
-            if (fabs(dot - (i == j ? 1.0 : 0.0)) > ROTATION_TOLERANCE) return 0;
-        }
-    }
-    /* det R = +1: a reflection would turn the shapes inside out. */
-    double det = r[0] * (r[4] * r[8] - r[5] * r[7]) - r[1] * (r[3] * r[8] - r[5] * r[6]) +
-                 r[2] * (r[3] * r[7] - r[4] * r[6]);
+    /* R R^T = I: the six distinct entries. Written so that NaN or Inf (which
+     * fail every comparison) are rejected by the same tests. */
+    double r00 = r[0] * r[0] + r[1] * r[1] + r[2] * r[2];
+    double r11 = r[3] * r[3] + r[4] * r[4] + r[5] * r[5];
+    double r22 = r[6] * r[6] + r[7] * r[7] + r[8] * r[8];
+    double r01 = r[0] * r[3] + r[1] * r[4] + r[2] * r[5];
+    double r02 = r[0] * r[6] + r[1] * r[7] + r[2] * r[8];
+    double r12 = r[3] * r[6] + r[4] * r[7] + r[5] * r[8];
+    if (!(fabs(r00 - 1.0) <= ROTATION_TOLERANCE && fabs(r11 - 1.0) <= ROTATION_TOLERANCE &&
+          fabs(r22 - 1.0) <= ROTATION_TOLERANCE && fabs(r01) <= ROTATION_TOLERANCE &&
+          fabs(r02) <= ROTATION_TOLERANCE && fabs(r12) <= ROTATION_TOLERANCE))
+        return 0;
+    /* det R = +1 (a reflection would turn the shapes inside out): with
+     * orthonormal rows, det = <row 2, row 0 x row 1> is +-1. */
+    double det = r[6] * (r[1] * r[5] - r[2] * r[4]) + r[7] * (r[2] * r[3] - r[0] * r[5]) +
+                 r[8] * (r[0] * r[4] - r[1] * r[3]);
     return det > 0.0;
 }
 

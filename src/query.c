@@ -12,8 +12,12 @@ static int shape_is_valid(const agjk_shape *shape) {
 /* Reads the caller's options, whatever version of agjk_options it compiled
  * against: fields past its struct_size keep their defaults. */
 static int read_options(const agjk_options *given, agjk_options *opts) {
-    agjk_options_init_sized(opts, sizeof *opts);
-    if (!given) return 1;
+    if (!given) {
+        agjk_options_init_sized(opts, sizeof *opts);
+        return 1;
+    }
+    /* Every field of this version is required (struct_size covers them all):
+     * an older, smaller struct would need its missing fields defaulted here. */
     if (given->struct_size < sizeof(agjk_options)) return 0; /* uninitialised or too old */
     memcpy(opts, given, sizeof *opts);
     opts->struct_size = (uint32_t)sizeof *opts;
