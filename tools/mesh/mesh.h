@@ -32,8 +32,16 @@ typedef struct mesh_points {
 
 /* Loads `path` with assimp. Returns 1 on success; 0 with a message in `err`
  * for a missing/unreadable/empty file, a format assimp cannot read, a scene
- * without vertices, or a non-finite vertex. */
+ * without vertices, or a non-finite vertex.
+ *
+ * assimp itself crashes on some malformed files (found by fuzzing: OFF files
+ * with extra vertex lines, PLY files with out-of-range face indices), so the
+ * import runs in a child process (mesh_isolate.c): a crash there becomes an
+ * error message here. Set the environment variable AGJK_MESH_IN_PROCESS=1 to
+ * load in-process instead (debuggers, coverage-guided fuzzers). */
 int mesh_load(const char *path, mesh_points *out, char *err, size_t err_size);
+/* The same, always in this process. */
+int mesh_load_in_process(const char *path, mesh_points *out, char *err, size_t err_size);
 void mesh_points_free(mesh_points *points);
 
 /* Re-reads the vertex coordinates of an OFF or OBJ file in double precision

@@ -6,7 +6,8 @@
 # Fragments read before this one (tools/cli, tests/cli) name the archive
 # literally: $(OUT)/tools/mesh/libagjkmesh.a.
 
-MESH_SRCS := tools/mesh/mesh_load.c tools/mesh/mesh_refine.c tools/mesh/mesh_hull.c
+MESH_SRCS := tools/mesh/mesh_load.c tools/mesh/mesh_isolate.c tools/mesh/mesh_refine.c \
+             tools/mesh/mesh_hull.c
 MESH_OBJS := $(MESH_SRCS:%.c=$(OUT)/%.o)
 MESH_LIB  := $(OUT)/tools/mesh/libagjkmesh.a
 MESH_CPPFLAGS := -Itools/mesh $(shell $(PKG_CONFIG) --cflags assimp qhull_r 2>/dev/null)

@@ -227,7 +227,7 @@ static const struct aiScene *import_scene(const char *path, const char *format) 
     return scene;
 }
 
-int mesh_load(const char *path, mesh_points *out, char *err, size_t err_size) {
+int mesh_load_in_process(const char *path, mesh_points *out, char *err, size_t err_size) {
     memset(out, 0, sizeof *out);
     file_extension(path, out->format, sizeof out->format);
     if (!precheck_file(path, out->format, err, err_size)) return 0;
