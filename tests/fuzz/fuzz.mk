@@ -58,9 +58,12 @@ fuzz-build:
 # leak detection is off for the mesh target.
 fuzz: fuzz-build
 	@mkdir -p $(FUZZ_BIN)/corpus-query $(FUZZ_BIN)/corpus-mesh
+	@status=0; \
 	$(FUZZ_BIN)/fuzz_query -max_total_time=$(FUZZ_SECONDS) -max_len=2048 -timeout=10 \
 	    -artifact_prefix=$(FUZZ_BIN)/query- -print_final_stats=1 \
-	    $(FUZZ_BIN)/corpus-query tests/fuzz/regressions/query
+	    $(FUZZ_BIN)/corpus-query tests/fuzz/regressions/query || status=1; \
 	ASAN_OPTIONS=detect_leaks=0 $(FUZZ_BIN)/fuzz_mesh -max_total_time=$(FUZZ_SECONDS) \
 	    -max_len=8192 -timeout=10 -rss_limit_mb=1024 -artifact_prefix=$(FUZZ_BIN)/mesh- \
-	    -print_final_stats=1 $(FUZZ_BIN)/corpus-mesh tests/fuzz/regressions/mesh tests/fuzz/seeds/mesh
+	    -print_final_stats=1 $(FUZZ_BIN)/corpus-mesh tests/fuzz/regressions/mesh \
+	    tests/fuzz/seeds/mesh || status=1; \
+	if [ $$status -ne 0 ]; then echo "fuzz: crashers in $(FUZZ_BIN)/*crash-*"; fi; exit $$status

@@ -30,6 +30,14 @@ static long g_count; /* calls checked */
 #define VALID 0
 #define INVALID 4
 #define ANY (-1)
+/* Finite values beyond the documented coordinate range (types.h). */
+#ifdef AGJK_MAX_COORDINATE
+#define BEYOND INVALID
+#define MAXC AGJK_MAX_COORDINATE
+#else
+#define BEYOND ANY
+#define MAXC 1e300
+#endif
 
 typedef struct guarded_shape {
     unsigned char pre[STAB_GUARD];
@@ -85,7 +93,11 @@ START_TEST(test_scalar_shapes) {
     EXPECT_SHAPE(agjk_shape_point(shape_), VALID);
     EXPECT_SHAPE(agjk_shape_sphere(NULL, 1.0), INVALID);
     EXPECT_SHAPE(agjk_shape_sphere(shape_, 0.0), VALID);
-    EXPECT_SHAPE(agjk_shape_sphere(shape_, 1e300), VALID);
+    EXPECT_SHAPE(agjk_shape_sphere(shape_, MAXC), VALID);
+#ifdef AGJK_MAX_COORDINATE
+    EXPECT_SHAPE(agjk_shape_sphere(shape_, 2 * MAXC), INVALID);
+    EXPECT_SHAPE(agjk_shape_sphere(shape_, DBL_MAX), INVALID);
+#endif
     EXPECT_SHAPE(agjk_shape_sphere(shape_, -1.0), INVALID);
     EXPECT_SHAPE(agjk_shape_sphere(shape_, -DBL_MIN), INVALID);
     EXPECT_SHAPE(agjk_shape_sphere(shape_, nan), INVALID);
@@ -119,7 +131,7 @@ START_TEST(test_scalar_shapes) {
                               {{1, -inf, 1}}, {{-0.0, 1, 1}}};
         agjk_box b[] = {{{-1, 1, 1}}, {{1, nan, 1}}, {{1, 1, inf}}, {{-DBL_MIN, 0, 0}}};
         agjk_box bz = {{0, 0, 0}}, bflat = {{1, 1, 0}};
-        agjk_ellipsoid etiny = {{DBL_MIN, 1, 1e300}};
+        agjk_ellipsoid etiny = {{DBL_MIN, 1, MAXC}};
         for (size_t i = 0; i < sizeof e / sizeof e[0]; i++)
             EXPECT_SHAPE(agjk_shape_ellipsoid(shape_, &e[i]), INVALID); /* radii must be > 0 */
         for (size_t i = 0; i < sizeof b / sizeof b[0]; i++)
@@ -177,20 +189,30 @@ START_TEST(test_polytope_and_margin) {
     }
     /* Margins. */
     {
+#ifdef AGJK_MAX_COORDINATE
+        const double bad_m[] = {-1.0, -DBL_MIN, nan, inf, -inf, 2 * MAXC};
+#else
         const double bad_m[] = {-1.0, -DBL_MIN, nan, inf, -inf};
+#endif
         for (size_t i = 0; i < sizeof bad_m / sizeof bad_m[0]; i++) {
             guarded_shape g;
             agjk_status st;
             gs_init(&g);
             ck_assert(agjk_shape_sphere(&g.s, 1.0) != AGJK_STATUS_INVALID_INPUT);
-            st = agjk_shape_set_margin(&g.s, bad_m[i]);
-            gs_check(&g, "agjk_shape_set_margin");
+            {
+                agjk_shape before = g.s;
+                st = agjk_shape_set_margin(&g.s, bad_m[i]);
+                gs_check(&g, "agjk_shape_set_margin");
+                ck_assert_msg(memcmp(&before, &g.s, sizeof before) == 0,
+                              "rejected margin %g changed the shape", bad_m[i]);
+            }
             ck_assert_msg(st == AGJK_STATUS_INVALID_INPUT, "margin %g accepted", bad_m[i]);
             g_count++;
         }
         EXPECT_SHAPE(agjk_shape_set_margin(NULL, 1.0), INVALID);
         EXPECT_SHAPE((agjk_shape_point(shape_), agjk_shape_set_margin(shape_, 0.0)), VALID);
-        EXPECT_SHAPE((agjk_shape_point(shape_), agjk_shape_set_margin(shape_, 1e300)), VALID);
+        EXPECT_SHAPE((agjk_shape_point(shape_), agjk_shape_set_margin(shape_, MAXC)), VALID);
+
     }
 }
 END_TEST
@@ -399,11 +421,18 @@ START_TEST(test_query_poses) {
         /* Finite but huge translations: any honest status, no NaN. */
         p = g_pb;
         p.translation.x = 1e300;
-        run_queries("translation 1e300", &g_sa, pa, &g_sb, pb, &o, ANY);
+        run_queries("translation 1e300", &g_sa, pa, &g_sb, pb, &o, BEYOND);
         p = g_pb;
         p.translation.x = DBL_MAX;
         p.translation.y = -DBL_MAX;
-        run_queries("translation DBL_MAX", &g_sa, pa, &g_sb, pb, &o, ANY);
+        run_queries("translation DBL_MAX", &g_sa, pa, &g_sb, pb, &o, BEYOND);
+        p = g_pb;
+        p.translation.x = MAXC; /* at the limit: valid, finite answer */
+        run_queries("translation at the coordinate limit", &g_sa, pa, &g_sb, pb, &o, VALID);
+        p = g_pb;
+        p.translation.y = -MAXC;
+        p.translation.z = MAXC;
+        run_queries("translation at the limit on two axes", &g_sa, pa, &g_sb, pb, &o, VALID);
         p = g_pb;
         p.translation.x = 1e-320;
         run_queries("denormal translation", &g_sa, pa, &g_sb, pb, &o, VALID);
@@ -450,6 +479,7 @@ START_TEST(test_hostile_support) {
             /* A non-finite point makes the query invalid, but only if the
              * query asks for it: with `after` good answers first it may be done. */
             int expected = mode <= 1 && after == 0 ? INVALID : ANY;
+            if ((mode == 2 || mode == 3) && after == 0) expected = BEYOND;
             snprintf(what, sizeof what, "hostile support mode %d after %d", mode, after);
             for (int m = 0; m < 5; m++) {
                 o.method = (agjk_method)m;
@@ -480,8 +510,10 @@ START_TEST(test_hostile_support) {
         run_queries("negative margin", &s, &g_pa, &g_sb, &g_pb, &o, INVALID);
         s.margin = INF_;
         run_queries("Inf margin", &s, &g_pa, &g_sb, &g_pb, &o, INVALID);
-        s.margin = 1e300;
+        s.margin = MAXC;
         run_queries("huge margin", &s, &g_pa, &g_sb, &g_pb, &o, VALID);
+        s.margin = 1e300;
+        run_queries("margin 1e300", &s, &g_pa, &g_sb, &g_pb, &o, BEYOND);
         s.margin = DBL_MAX;
         run_queries("DBL_MAX margins", &s, &g_pa, &s, &g_pb, &o, ANY);
     }
@@ -539,6 +571,7 @@ START_TEST(test_simplex_projection) {
                 stab_guard_fill(g.post);
                 agjk_status st = agjk_simplex_project_origin(w, c, &g.p);
                 ck_assert(stab_guard_ok(g.pre) && stab_guard_ok(g.post));
+                if (st == AGJK_STATUS_INVALID_INPUT && scales[s] > MAXC) continue; /* documented */
                 ck_assert_msg(st == AGJK_STATUS_SEPARATED || st == AGJK_STATUS_INTERSECTING,
                               "scale %g: status %d", scales[s], (int)st);
                 ck_assert_msg(isfinite(g.p.point.x) && isfinite(g.p.point.y) &&
