@@ -25,13 +25,12 @@ static inline uint16_t fz_u16(fuzz_reader *r) {
     return (uint16_t)((hi << 8) | fz_u8(r));
 }
 
-/* Finite values beyond ~1e150 overflow squared norms; the library's handling
- * of them is a known open issue (see the stability report), so by default
- * the decoder keeps finite magnitudes in [1e-150, 1e150] to let the fuzzer
- * look for other bugs. Build with -DFUZZ_ALLOW_HUGE to lift this. NaN and
- * Inf are always passed through: they must give AGJK_STATUS_INVALID_INPUT. */
+/* Values beyond AGJK_MAX_COORDINATE are documented to give
+ * AGJK_STATUS_INVALID_INPUT, so every double goes through as decoded. Without
+ * that limit (older headers), finite magnitudes are kept in [1e-150, 1e150]
+ * because squared norms would overflow. */
 static inline double fz_tame(double v) {
-#ifndef FUZZ_ALLOW_HUGE
+#ifndef AGJK_MAX_COORDINATE
     if (isfinite(v)) {
         if (fabs(v) > 1e150) return v > 0 ? 1e150 : -1e150;
         if (v != 0 && fabs(v) < 1e-150) return 0.0;
@@ -39,6 +38,13 @@ static inline double fz_tame(double v) {
 #endif
     return v;
 }
+
+/* Largest size or coordinate the library accepts. */
+#ifdef AGJK_MAX_COORDINATE
+#define FZ_MAXC AGJK_MAX_COORDINATE
+#else
+#define FZ_MAXC 1e300
+#endif
 
 /* A double: mostly "nice" (a 16-bit mantissa times a power of ten in
  * 1e-12 .. 1e12, or small integers, or exact 0/1), sometimes raw bits (NaN,
@@ -112,13 +118,16 @@ static inline void fz_options(fuzz_reader *r, agjk_options *o) {
     }
 }
 
+/* A violated invariant ends the process with exit(): libFuzzer reports a
+ * target that exits as a crash and saves the input (even when its signal
+ * handlers are off, as for the mesh target), and the replay fails. */
 #define FUZZ_CHECK(cond, ...)                                              \
     do {                                                                   \
         if (!(cond)) {                                                     \
             fprintf(stderr, "fuzz invariant violated: %s: ", #cond);       \
             fprintf(stderr, __VA_ARGS__);                                  \
             fprintf(stderr, "\n");                                         \
-            abort();                                                       \
+            exit(86);                                                      \
         }                                                                  \
     } while (0)
 

@@ -97,7 +97,7 @@ static void decode_shape(fuzz_reader *r, fz_shape *s) {
     if (s->valid && (fz_u8(r) & 1)) {
         double m = fz_double(r);
         agjk_status sm = agjk_shape_set_margin(&s->shape, m);
-        FUZZ_CHECK(sm == (isfinite(m) && m >= 0 ? AGJK_STATUS_OK : AGJK_STATUS_INVALID_INPUT),
+        FUZZ_CHECK(sm == (m >= 0 && m <= FZ_MAXC ? AGJK_STATUS_OK : AGJK_STATUS_INVALID_INPUT),
                    "set_margin(%g) gave %d", m, sm);
     }
 }

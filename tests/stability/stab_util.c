@@ -414,6 +414,9 @@ static void check_distance(const char *qname, const ref_shape *a, const agjk_pos
                 st->worst_rel = rel;
                 snprintf(st->worst_name, sizeof st->worst_name, "%s", qname);
             }
+            if (s == AGJK_STATUS_SEPARATED && opt->tolerance_mode == AGJK_TOLERANCE_RELATIVE &&
+                dtrue > 1e4 * slack && rel > st->worst_rel_clear)
+                st->worst_rel_clear = rel;
             if (ratio > st->worst_bound_ratio) st->worst_bound_ratio = ratio;
             /* The documented promise of relative mode (types.h): a certified
              * relative error of at most tolerance / 2, above the floating-point
@@ -573,8 +576,10 @@ int stab_check_case(const char *name, ref_shape *a, const agjk_pose *pa, ref_sha
 
 void stab_stats_print(const char *title, const stab_stats *s) {
     printf("%s: %ld cases, %ld queries, %ld failures, %ld not converged, %ld contact, "
-           "%ld reference misses; worst relative error %.3g (%s), worst error/bound %.3g\n",
+           "%ld reference misses; worst relative error %.3g (%s; rounding of the inputs "
+           "dominates there), %.3g where the distance exceeds 1e4 x the rounding slack; "
+           "worst error/bound %.3g\n",
            title, s->cases, s->queries, s->failures, s->not_converged, s->contact,
            s->ref_failures, s->worst_rel, s->worst_name[0] ? s->worst_name : "-",
-           s->worst_bound_ratio);
+           s->worst_rel_clear, s->worst_bound_ratio);
 }

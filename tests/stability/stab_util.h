@@ -79,6 +79,7 @@ typedef struct stab_stats {
     long contact;          /* CONTACT_WITHIN_TOLERANCE answers */
     long ref_failures;     /* reference did not converge: case skipped */
     double worst_rel;      /* worst |d - d_true| / d_true, SEPARATED in relative mode */
+    double worst_rel_clear; /* the same where d_true > 1e4 * slack (well above rounding) */
     double worst_bound_ratio; /* worst |d - d_ref| / (bound + slack) */
     char worst_name[160];
 } stab_stats;
