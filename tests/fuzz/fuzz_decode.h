@@ -153,6 +153,21 @@ static inline double fz_support_value(const agjk_shape *s, const agjk_pose *p, a
            d.y * p->translation.y + d.z * p->translation.z;
 }
 
+/* Sum of |support point| over the six axis directions of the local frame:
+ * bounds the shape's extent around its origin (margin excluded). */
+static inline double fz_extent(const agjk_shape *s) {
+    double e = 0;
+    for (int k = 0; k < 6; k++) {
+        agjk_vec3 d = {0, 0, 0}, p;
+        int hint = 0;
+        double *c = k % 3 == 0 ? &d.x : k % 3 == 1 ? &d.y : &d.z;
+        *c = k < 3 ? 1.0 : -1.0;
+        s->support(s->data, &d, &p, &hint);
+        e += fabs(p.x) + fabs(p.y) + fabs(p.z);
+    }
+    return e;
+}
+
 /* Runs both queries on one input and checks every invariant that holds
  * whatever the input: documented status, result equal to the return value,
  * no NaN (no Inf either for finite, tame inputs), status semantics, and that
@@ -197,10 +212,18 @@ static inline void fz_check_pair(const agjk_shape *a, const agjk_pose *pa, const
          * h_A(n) + h_B(-n) <= rounding. */
         agjk_vec3 n = rc.normal, m = {-rc.normal.x, -rc.normal.y, -rc.normal.z};
         double ha = fz_support_value(a, pa, n), hb = fz_support_value(b, pb, m);
+#ifdef FUZZ_DEBUG
+        fprintf(stderr, "collide normal %.17g %.17g %.17g: h_A(n) %.17g h_B(-n) %.17g\n", n.x, n.y,
+                n.z, ha, hb);
+#endif
+        /* The normal is reported in world frame, rounded: turning it back
+         * into a shape's frame moves h by ~eps x the shape's extent, so the
+         * slack scales with the extents (a 1e48 vertex makes any world-frame
+         * plane uncertain by ~1e32), not with the distance. */
         double scale = fabs(pa->translation.x) + fabs(pa->translation.y) + fabs(pa->translation.z) +
                        fabs(pb->translation.x) + fabs(pb->translation.y) + fabs(pb->translation.z) +
-                       fabs(ha) + fabs(hb) + a->margin + b->margin;
-        FUZZ_CHECK(ha + hb <= 1e-9 * scale, "collide SEPARATED but plane overlaps by %g (scale %g)",
+                       fz_extent(a) + fz_extent(b) + a->margin + b->margin;
+        FUZZ_CHECK(ha + hb <= 1e-12 * scale, "collide SEPARATED but plane overlaps by %g (scale %g)",
                    ha + hb, scale);
     }
 }
