@@ -10,9 +10,13 @@
  * machine, same ABI). The parent reads until EOF, then reaps the child; a
  * child killed by a signal means the importer crashed.
  *
- * The child inherits the address-space limit; alarm() timers are not
- * inherited, so the remaining time is passed on explicitly and the child
- * dies by SIGALRM (default action) when it runs out. */
+ * assimp can also loop forever on a malformed file (fuzzing: a 245-byte PLY
+ * whose header never ends). The child therefore gets a time budget that grows
+ * with the file size, far above what assimp needs on valid files (it reads
+ * text meshes at 5 MB/s and more on a loaded machine), and dies by SIGALRM
+ * (default action) when it runs out. alarm() timers are not inherited across
+ * fork(), so the caller's remaining time, if shorter, is passed on the same
+ * way. The child inherits the address-space limit. */
 #include "mesh.h"
 
 #include <errno.h>
@@ -20,8 +24,20 @@
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
+
+/* Import time budget: a base plus this many seconds per megabyte. */
+#define IMPORT_BASE_SECONDS 10.0
+#define IMPORT_SECONDS_PER_MB 1.0
+
+static unsigned import_budget(const char *path) {
+    struct stat st;
+    double mb = stat(path, &st) == 0 ? (double)st.st_size / (1024.0 * 1024.0) : 0.0;
+    double s = IMPORT_BASE_SECONDS + IMPORT_SECONDS_PER_MB * mb;
+    return s > 1e6 ? 1000000u : (unsigned)s;
+}
 
 typedef struct wire_header {
     int32_t ok;
@@ -115,6 +131,9 @@ int mesh_load(const char *path, mesh_points *out, char *err, size_t err_size) {
         return mesh_load_in_process(path, out, err, err_size);
     unsigned left = alarm(0); /* read the parent's remaining time... */
     if (left) alarm(left);    /* ...and keep it running */
+    unsigned budget = import_budget(path);
+    int budget_binds = !left || budget < left;
+    if (budget_binds) left = budget;
     fflush(NULL);             /* nothing buffered twice */
     pid_t pid = fork();
     if (pid < 0) {
@@ -135,7 +154,11 @@ int mesh_load(const char *path, mesh_points *out, char *err, size_t err_size) {
     while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {}
     if (ok) return 1;
     if (!answered) {
-        if (WIFSIGNALED(status) && WTERMSIG(status) == SIGALRM)
+        if (WIFSIGNALED(status) && WTERMSIG(status) == SIGALRM && budget_binds)
+            snprintf(err, err_size,
+                     "%s: the mesh importer (assimp) did not finish within %u s, far longer "
+                     "than a valid file of this size needs: malformed file", path, budget);
+        else if (WIFSIGNALED(status) && WTERMSIG(status) == SIGALRM)
             snprintf(err, err_size, "%s: time limit exceeded while reading the mesh", path);
         else if (WIFSIGNALED(status))
             snprintf(err, err_size,

@@ -115,6 +115,28 @@ static int walk_node(walk *w, const struct aiNode *node, const xform *parent, in
     return 1;
 }
 
+/* assimp 5.2 loops forever on a PLY whose header never ends: require the
+ * end_header line within the first 64 KiB (real headers take a few hundred
+ * bytes), as a line of its own. */
+static int ply_header_ends(const char *path) {
+    enum { HEAD = 65536 };
+    char *buf = malloc(HEAD);
+    FILE *f = fopen(path, "rb");
+    if (!f || !buf) {
+        if (f) fclose(f);
+        free(buf);
+        return 1; /* cannot check: let assimp judge */
+    }
+    size_t n = fread(buf, 1, HEAD, f);
+    fclose(f);
+    int found = 0;
+    for (size_t i = 0; !found && i + 10 <= n; i++)
+        found = (i == 0 || buf[i - 1] == '\n') && memcmp(buf + i, "end_header", 10) == 0 &&
+                (i + 10 == n || buf[i + 10] == '\n' || buf[i + 10] == '\r' || buf[i + 10] == ' ');
+    free(buf);
+    return found;
+}
+
 /* Checks the file before assimp sees it, for precise messages. */
 static int precheck_file(const char *path, const char *format, char *err, size_t err_size) {
     struct stat st;
@@ -135,6 +157,11 @@ static int precheck_file(const char *path, const char *format, char *err, size_t
     fclose(f);
     if (c == EOF) {
         set_error(err, err_size, "%s: empty file", path);
+        return 0;
+    }
+    if (strcmp(format, "ply") == 0 && !ply_header_ends(path)) {
+        set_error(err, err_size, "%s: PLY header without end_header (truncated or malformed)",
+                  path);
         return 0;
     }
     if (strcmp(format, "off") == 0 && !mesh_off_counts_plausible(path, (long)st.st_size)) {
