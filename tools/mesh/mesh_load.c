@@ -137,6 +137,18 @@ static int ply_header_ends(const char *path) {
     return found;
 }
 
+/* assimp's messages may quote kilobytes of the file, newlines and binary bytes
+ * included: keep one printable line of bounded length. */
+static void clean_message(const char *msg, char *out, size_t size) {
+    size_t n = 0;
+    for (; msg && *msg && n + 1 < size; msg++) {
+        unsigned char c = (unsigned char)*msg;
+        out[n++] = (c < 0x20 || c == 0x7f) ? ' ' : (char)c;
+    }
+    out[n] = '\0';
+    if (msg && *msg && size > 4) memcpy(out + size - 4, "...", 4);
+}
+
 /* Checks the file before assimp sees it, for precise messages. */
 static int precheck_file(const char *path, const char *format, char *err, size_t err_size) {
     struct stat st;
@@ -271,9 +283,10 @@ int mesh_load_in_process(const char *path, mesh_points *out, char *err, size_t e
         }
     }
     if (!scene) {
-        const char *why = aiGetErrorString();
+        char why[160];
+        clean_message(aiGetErrorString(), why, sizeof why);
         set_error(err, err_size, "%s: cannot read mesh: %s", path,
-                  (why && *why) ? why : "unknown format or malformed file");
+                  why[0] ? why : "unknown format or malformed file");
         return 0;
     }
     int all_identity = 1;
