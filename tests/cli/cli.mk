@@ -17,7 +17,7 @@ $(TEST_CLI_SCRIPT): tests/cli/test_cli.sh $(OUT)/tools/cli/agjk
 $(TEST_HULL_SUPPORT): tests/cli/test_hull_support.c $(OUT)/tools/mesh/libagjkmesh.a $(LIB_A) \
                       tools/mesh/mesh.h $(HEADERS)
 	@mkdir -p $(dir $@)
-	$(CC) $(ALL_CPPFLAGS) $(MESH_CPPFLAGS) $(ALL_CFLAGS) $< -o $@ \
+	$(CC) $(ALL_CPPFLAGS) $(MESH_CPPFLAGS) $(ALL_CFLAGS) $(LDFLAGS) $< -o $@ \
 	    $(OUT)/tools/mesh/libagjkmesh.a $(LIB_A) $(MESH_LIBS)
 
 CHECK_BINS += $(TEST_HULL_SUPPORT) $(TEST_CLI_SCRIPT)

@@ -11,7 +11,7 @@ $(OUT)/tools/cli/%.o: tools/cli/%.c tools/cli/cli.h tools/mesh/mesh.h $(HEADERS)
 	$(CC) $(ALL_CPPFLAGS) $(MESH_CPPFLAGS) -Itools/cli $(ALL_CFLAGS) -c $< -o $@
 
 $(CLI_BIN): $(CLI_OBJS) $(OUT)/tools/mesh/libagjkmesh.a $(LIB_A)
-	$(CC) $(ALL_CFLAGS) -o $@ $(CLI_OBJS) $(OUT)/tools/mesh/libagjkmesh.a $(LIB_A) $(MESH_LIBS)
+	$(CC) $(ALL_CFLAGS) $(LDFLAGS) -o $@ $(CLI_OBJS) $(OUT)/tools/mesh/libagjkmesh.a $(LIB_A) $(MESH_LIBS)
 
 TOOL_BINS += $(CLI_BIN)
 INSTALL_BINS += $(CLI_BIN)

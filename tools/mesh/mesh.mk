@@ -24,7 +24,7 @@ $(MESH_LIB): $(MESH_OBJS)
 
 $(SUPPORT_BENCH_BIN): tools/mesh/support_bench.c $(MESH_LIB) $(LIB_A)
 	@mkdir -p $(dir $@)
-	$(CC) $(ALL_CPPFLAGS) $(MESH_CPPFLAGS) $(ALL_CFLAGS) $< -o $@ $(MESH_LIB) $(LIB_A) $(MESH_LIBS)
+	$(CC) $(ALL_CPPFLAGS) $(MESH_CPPFLAGS) $(ALL_CFLAGS) $(LDFLAGS) $< -o $@ $(MESH_LIB) $(LIB_A) $(MESH_LIBS)
 
 TOOL_BINS += $(SUPPORT_BENCH_BIN)
 
