@@ -222,6 +222,11 @@ printf 'OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n0 0 0.10000000000000001\n3 0 1 2\n3 0 1
 distance_is "double precision coordinates" "3 - 0.10000000000000001 - 0.5" 1e-15 "$tmp/thin.off" "$C" --pose-b 0 0 3 1 0 0 0
 printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1.0000001192092896\nv 0 0 1.00000001\nf 1 2 3\nf 1 2 5\n' >"$tmp/near.obj"
 distance_is "double precision OBJ" "3 - 1.00000001 - 0.5" 1e-15 "$tmp/near.obj" "$C" --pose-b 0 0 3 1 0 0 0
+printf 'ply\nformat ascii 1.0\ncomment c\nelement vertex 4\nproperty double x\nproperty double y\nproperty double z\nproperty uchar red\nelement face 2\nproperty list uchar int vertex_indices\nend_header\n0 0 0 1\n1 0 0 2\n0 1 0 3\n0 0 0.10000000000000001 4\n3 0 1 2\n3 0 1 3\n' >"$tmp/double.ply"
+distance_is "double precision PLY" "2.4" 1e-15 "$tmp/double.ply" "$C" --pose-b 0 0 3 1 0 0 0
+sed 's/property double/property float/' "$tmp/double.ply" >"$tmp/float.ply"
+# A PLY coordinate declared float is the float nearest 0.1 (python's struct rounds the same way).
+distance_is "float PLY stays float" "2.5 - __import__('struct').unpack('f', __import__('struct').pack('f', 0.1))[0]" 1e-15 "$tmp/float.ply" "$C" --pose-b 0 0 3 1 0 0 0
 
 # Other formats through assimp: PLY, binary STL, and glTF with a node
 # transform (translation 10, scale 2) that must be applied.

@@ -12,7 +12,7 @@ static void info_text(const char *path, const cli_shape *s) {
     printf("%-17s %zu\n", "faces:", s->points.face_count);
     printf("%-17s %zu\n", "vertices:", s->points.count);
     printf("%-17s %s\n", "precision:",
-           s->points.double_precision ? "double (re-read from the text file)"
+           s->points.double_precision ? "double (re-read from the text file, as declared)"
                                       : "float (as assimp stores it)");
     printf("%-17s %s\n", "hull:", mesh_hull_kind(h));
     printf("%-17s %d\n", "hull_vertices:", (int)h->vertex_count);

@@ -24,7 +24,8 @@ typedef struct mesh_points {
     size_t count;
     size_t mesh_count;   /* meshes merged */
     size_t face_count;   /* faces of all kinds (points, lines, polygons) */
-    /* 1: coordinates were re-read from the file in double precision (OFF, OBJ);
+    /* 1: coordinates were re-read from the text in double precision (OFF, OBJ,
+     * ASCII PLY; a PLY coordinate declared float is rounded to float);
      * 0: they are assimp's single-precision floats. */
     int double_precision;
     char format[16];     /* file extension as assimp saw it, e.g. "off" */
@@ -44,7 +45,7 @@ int mesh_load(const char *path, mesh_points *out, char *err, size_t err_size);
 int mesh_load_in_process(const char *path, mesh_points *out, char *err, size_t err_size);
 void mesh_points_free(mesh_points *points);
 
-/* Re-reads the vertex coordinates of an OFF or OBJ file in double precision
+/* Re-reads the vertex coordinates of an OFF, OBJ or ASCII PLY file in double precision
  * and replaces assimp's float coordinates by them (see mesh_refine.c). Returns
  * 1 if every point was matched and replaced, 0 (points unchanged) otherwise,
  * -1 if the file holds a non-finite coordinate (index in *nonfinite_vertex). */

@@ -1,9 +1,9 @@
 /* SPDX-License-Identifier: MIT */
-/* Double-precision coordinates for OFF and OBJ files.
+/* Double-precision coordinates for OFF, OBJ and ASCII PLY files.
  *
  * assimp (as packaged) stores positions as float: a coordinate of 100 loses
  * about 4e-6, which for parts 0.01 apart is a 4e-4 relative distance error
- * that no solver tolerance can recover. OFF and OBJ are plain text, so we
+ * that no solver tolerance can recover. OFF, OBJ and ASCII PLY are text, so we
  * re-read their vertex records with strtod (correctly rounded) and put the
  * doubles back in place of assimp's floats.
  *
@@ -85,6 +85,67 @@ static int read_obj(FILE *f, fvert_list *l) {
         if (read3(s + 1, c) != 3 || !list_push(l, c)) return 0;
     }
     return 1;
+}
+
+/* ASCII PLY: the vertex element's x, y, z properties, one vertex per line.
+ * A coordinate declared `float` is rounded to float (the file says that is
+ * its precision, and readers that honour the header agree); `double` keeps
+ * the double. Elements before the vertices (rare) take one line per item.
+ * Binary PLY stores binary floats or doubles, which assimp keeps exactly for
+ * floats; we decline it (and a property list before x, y, z). */
+static int read_ply(FILE *f, fvert_list *l) {
+    char line[4096];
+    long skip_lines = 0, count = -1;
+    int in_vertex = 0, nprop = 0, axis_prop[3] = {-1, -1, -1}, axis_float[3] = {0, 0, 0};
+    int ascii = 0;
+    while (fgets(line, sizeof line, f)) {
+        char a[64] = "", b[64] = "", c[64] = "";
+        int n = sscanf(line, "%63s %63s %63s", a, b, c);
+        if (n >= 1 && strcmp(a, "end_header") == 0) break;
+        if (n >= 2 && strcmp(a, "format") == 0) ascii = strcmp(b, "ascii") == 0;
+        if (n >= 3 && strcmp(a, "element") == 0) {
+            if (count >= 0) in_vertex = 0; /* vertices done: later elements do not matter */
+            else if (strcmp(b, "vertex") == 0) {
+                in_vertex = 1;
+                count = strtol(c, NULL, 10);
+            } else {
+                skip_lines += strtol(c, NULL, 10);
+            }
+        }
+        if (n >= 3 && strcmp(a, "property") == 0 && in_vertex) {
+            if (strcmp(b, "list") == 0) return 0;
+            for (int k = 0; k < 3; k++)
+                if (strcmp(c, (const char *[]){"x", "y", "z"}[k]) == 0) {
+                    axis_prop[k] = nprop;
+                    axis_float[k] = strcmp(b, "float") == 0 || strcmp(b, "float32") == 0;
+                }
+            nprop++;
+        }
+    }
+    if (!ascii || count < 0 || count > 1000000000L || skip_lines < 0 || axis_prop[0] < 0 ||
+        axis_prop[1] < 0 || axis_prop[2] < 0)
+        return 0;
+    for (long i = 0; i < skip_lines; i++)
+        if (!fgets(line, sizeof line, f)) return 0;
+    while ((long)l->count < count && fgets(line, sizeof line, f)) {
+        double v[64], c3[3];
+        int n = 0;
+        const char *s = line;
+        char *end;
+        while (n < nprop && n < 64) {
+            v[n] = strtod(s, &end);
+            if (end == s) break;
+            s = end;
+            n++;
+        }
+        if (n < nprop && n < 64) return 0;
+        for (int k = 0; k < 3; k++) {
+            if (axis_prop[k] >= 64) return 0;
+            c3[k] = axis_float[k] ? (double)(float)v[axis_prop[k]] : v[axis_prop[k]];
+        }
+        if (!list_push(l, c3)) return 0;
+    }
+    return (long)l->count == count;
 }
 
 /* OFF header: "[ST][C][N]OFF" keyword, then the counts on the same line or
@@ -202,13 +263,14 @@ static int substitute(const fvert_list *l, mesh_points *points) {
 int mesh_refine_double(const char *path, const char *format, mesh_points *points,
                        long *nonfinite_vertex) {
     int is_obj = strcmp(format, "obj") == 0, is_off = strcmp(format, "off") == 0;
+    int is_ply = strcmp(format, "ply") == 0;
     *nonfinite_vertex = -1;
-    if (!is_obj && !is_off) return 0;
+    if (!is_obj && !is_off && !is_ply) return 0;
     FILE *f = fopen(path, "r");
     if (!f) return 0;
     fvert_list l = {NULL, 0, 0, -1};
     double faces;
-    int ok = is_obj ? read_obj(f, &l) : read_off(f, &l, &faces);
+    int ok = is_obj ? read_obj(f, &l) : is_off ? read_off(f, &l, &faces) : read_ply(f, &l);
     fclose(f);
     if (l.nonfinite >= 0) {
         *nonfinite_vertex = l.nonfinite;
