@@ -5,7 +5,10 @@ set -eu
 top=$(cd "$(dirname "$0")/.." && pwd)
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
-make -s -C "$top" install PREFIX="$tmp/prefix" >/dev/null
+# A plain build of its own: variables of a calling make (a sanitizer build's OUT,
+# OPT, LDFLAGS) must not leak into what a user would install.
+env -u MAKEFLAGS -u MFLAGS -u MAKEOVERRIDES -u MAKELEVEL \
+    make -s -C "$top" OUT="$tmp/out" install PREFIX="$tmp/prefix" >/dev/null
 export PKG_CONFIG_PATH="$tmp/prefix/lib/pkgconfig"
 cc=${CC:-cc}
 # shellcheck disable=SC2046

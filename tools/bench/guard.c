@@ -25,14 +25,19 @@ static int write_all(int fd, const void *buf, size_t n) {
 static void child_main(int fd, int start, int n, size_t record_size, guard_case_fn fn,
                        void *ctx) {
     unsigned char *msg = malloc(sizeof(int) + record_size);
+    /* The record is computed in its own (suitably aligned) allocation: msg +
+     * sizeof(int) is not aligned for a struct of doubles. */
+    void *record = malloc(record_size);
     int i;
-    if (!msg) _exit(3);
+    if (!msg || !record) _exit(3);
     for (i = start; i < n; ++i) {
-        memset(msg, 0, sizeof(int) + record_size);
+        memset(record, 0, record_size);
+        fn(ctx, i, record);
         memcpy(msg, &i, sizeof i);
-        fn(ctx, i, msg + sizeof(int));
+        memcpy(msg + sizeof(int), record, record_size);
         if (write_all(fd, msg, sizeof(int) + record_size) != 0) _exit(4);
     }
+    free(record);
     free(msg);
     _exit(0);
 }
