@@ -51,7 +51,7 @@ SAN_FLAGS := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-fr
 # 2e9 vertices would make assimp zero 24 GB: cap single allocations at 4 GB
 # (malloc returns NULL / new throws, as with a normal libc under overcommit
 # limits) and kill anything above 6 GB resident rather than the machine.
-SAN_ENV := ASAN_OPTIONS=detect_leaks=1:strict_string_checks=1:allocator_may_return_null=1:max_allocation_size_mb=4096:hard_rss_limit_mb=6144 \
+SAN_ENV := ASAN_OPTIONS=detect_leaks=1:strict_string_checks=1:allocator_may_return_null=1:max_allocation_size_mb=4096:hard_rss_limit_mb=6144:verify_asan_link_order=0 \
            UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 check-asan:
 	$(SAN_ENV) $(MAKE) OUT=$(OUT)/asan OPT="-O1 -g $(SAN_FLAGS)" LDFLAGS="$(SAN_FLAGS)" check
