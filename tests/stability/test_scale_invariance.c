@@ -253,6 +253,106 @@ START_TEST(test_scale_families) {
 }
 END_TEST
 
+/* Far outside the tested range, 1e-300 ... 1e50 (AGJK_MAX_COORDINATE): the
+ * library may refuse (INVALID_INPUT) or lose accuracy (NOT_CONVERGED, large
+ * bound), but it must not lie: a certified bracket must hold the truth and a
+ * certain Boolean answer must be right. Underflow of squared norms is the
+ * danger at the small end (1e-160 squared is below DBL_MIN). */
+static long g_extreme_checked, g_extreme_lies, g_extreme_refused;
+
+static void check_extreme(const char *tag, const problem *p) {
+    static const double far_factors[] = {1e-300, 1e-250, 1e-200, 1e-160, 1e-150, 1e-120, 1e-100,
+                                         1e-60, 1e-20, 1e20, 1e40};
+    for (size_t k = 0; k < sizeof far_factors / sizeof far_factors[0]; k++) {
+        double f = far_factors[k];
+        problem q;
+        agjk_shape sa, sb;
+        scale_problem(p, f, &q);
+        if (stab_make_shape(&q.a, &sa) != AGJK_STATUS_OK ||
+            stab_make_shape(&q.b, &sb) != AGJK_STATUS_OK) {
+            g_extreme_refused++;
+            continue;
+        }
+        double slack = 64 * DBL_EPSILON * stab_magnitude(&q.a, &q.pa, &q.b, &q.pb);
+        for (int m = 0; m < 5; m++) {
+            agjk_options opt = agjk_default_options();
+            agjk_result r;
+            agjk_status sd, sc;
+            opt.method = (agjk_method)m;
+            opt.tolerance_mode = AGJK_TOLERANCE_RELATIVE;
+            opt.max_iterations = 256;
+            sd = agjk_distance(&sa, &q.pa, &sb, &q.pb, &opt, &r);
+            ck_assert_msg(stab_result_sane("extreme distance", sd, &r, 256) < 2, "%s x %g", tag, f);
+            g_extreme_checked++;
+            if (sd == AGJK_STATUS_INVALID_INPUT) {
+                g_extreme_refused++;
+            } else if (p->sep >= 0) {
+                double truth = p->sep * f, lo = r.distance - r.bound;
+                if (truth < lo - slack || truth > r.distance + slack ||
+                    (sd == AGJK_STATUS_INTERSECTING && truth > slack)) {
+                    printf("FAIL %s x %g [%s]: %s distance %.17g bound %.3g, true %.17g\n", tag, f,
+                           agjk_method_name(opt.method), agjk_status_string(sd), r.distance,
+                           r.bound, truth);
+                    g_extreme_lies++;
+                }
+            } else if (p->overlap_certified && sd == AGJK_STATUS_SEPARATED) {
+                printf("FAIL %s x %g [%s]: certified overlap answered separated\n", tag, f,
+                       agjk_method_name(opt.method));
+                g_extreme_lies++;
+            }
+            sc = agjk_collide(&sa, &q.pa, &sb, &q.pb, &opt, &r);
+            ck_assert_msg(stab_result_sane("extreme collide", sc, &r, 256) < 2, "%s x %g", tag, f);
+            g_extreme_checked++;
+            if ((p->sep > 0 && p->sep * f > slack && sc == AGJK_STATUS_INTERSECTING) ||
+                (p->overlap_certified && sc == AGJK_STATUS_SEPARATED)) {
+                printf("FAIL %s x %g [%s]: collide says %s, truth separation %g\n", tag, f,
+                       agjk_method_name(opt.method), agjk_status_string(sc), p->sep * f);
+                g_extreme_lies++;
+            }
+        }
+    }
+}
+
+START_TEST(test_extreme_scales_honest) {
+    stab_rng rng = {2002};
+    static const double seps[] = {0.5, 1e-3, -1e-2};
+    ref_shape pairs[4][2];
+    pairs[0][0] = mk(REF_ELLIPSOID, 0.5, 0.3, 0.2, 0);
+    pairs[0][1] = mk(REF_BOX, 0.4, 0.4, 0.1, 0);
+    pairs[1][0] = mk(REF_SPHERE, 0.5, 0, 0, 0);
+    pairs[1][1] = mk(REF_CAPSULE, 0.2, 0.4, 0, 0);
+    pairs[2][0] = mk(REF_CYLINDER, 0.3, 0.4, 0, 0);
+    pairs[2][1] = mk(REF_CONE, 0.4, 0.3, 0, 0);
+    pairs[3][0] = mk(REF_ELLIPSOID, 1, 1e-2, 1e-3, 0);
+    pairs[3][1] = mk(REF_BOX, 0.3, 0.2, 0.1, 0.05);
+    for (int i = 0; i < 4; i++)
+        for (size_t s = 0; s < sizeof seps / sizeof seps[0]; s++) {
+            problem p;
+            agjk_vec3 n = stab_unit(&rng);
+            double nn[3] = {n.x, n.y, n.z};
+            char name[64];
+            memset(&p, 0, sizeof p);
+            p.a = pairs[i][0];
+            p.b = pairs[i][1];
+            stab_pose_identity(&p.pa);
+            stab_pose_identity(&p.pb);
+            stab_pose_random_rotation(&p.pa, &rng);
+            stab_pose_random_rotation(&p.pb, &rng);
+            p.pa.translation.x = stab_range(&rng, -1, 1);
+            p.sep = seps[s];
+            if (seps[s] >= 0)
+                stab_place(&p.a, &p.pa, &p.b, &p.pb, nn, seps[s]);
+            else
+                p.overlap_certified = stab_place_overlap(&p.a, &p.pa, &p.b, &p.pb, nn, -seps[s]);
+            snprintf(name, sizeof name, "extreme pair %d sep %g", i, seps[s]);
+            check_extreme(name, &p);
+        }
+    printf("extreme scales 1e-300 ... 1e40: %ld queries, %ld refused (INVALID_INPUT), %ld dishonest\n",
+           g_extreme_checked, g_extreme_refused, g_extreme_lies);
+    ck_assert_int_eq(g_extreme_lies, 0);
+}
+END_TEST
+
 int main(void) {
     Suite *s = suite_create("scale invariance");
     TCase *tc = tcase_create("scales");
@@ -260,6 +360,7 @@ int main(void) {
     int failed;
     tcase_set_timeout(tc, 120);
     tcase_add_test(tc, test_scale_families);
+    tcase_add_test(tc, test_extreme_scales_honest);
     suite_add_tcase(s, tc);
     sr = srunner_create(s);
     alarm(300);
