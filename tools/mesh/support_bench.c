@@ -21,7 +21,30 @@
  *   steepest-ascent walk, called through the same callback signature, at
  *   every size: that is what the threshold decides between.
  * Time: the best of several runs of `calls` support calls each, in ns per
- * call, directions precomputed (timing excludes generating them). */
+ * call, directions precomputed (timing excludes generating them).
+ *
+ * Measured (gcc 12 -O2, x86-64, a loaded 2-core machine, best of 21 runs;
+ * expect +-20% between runs):
+ *
+ *   hull vertices        8    16    32    64   128    512   2048
+ *   per call, random directions (hint from the previous, unrelated call)
+ *     scan              11    21    43    84   175    835   3128
+ *     hill climbing     38    50    72    92   128    236    474
+ *   per call, coherent directions (1 degree per call, hint carried)
+ *     scan              22    21    44    84   305    729   3031
+ *     hill climbing     21    21    15    15    16     18     30
+ *   whole agjk_distance query between two such hulls, ns
+ *     cold, scan       512   701   973  1435  2434   8107  48914
+ *     cold, climb      605   714   867   910  1075   1265   1814
+ *     warm, scan       577   607   897  1329  2411   8331  35147
+ *     warm, climb      491   566   666   664   780    818   1265
+ *
+ * Scan costs about 1.5 ns per vertex; a climb costs ~10-25 ns per vertex
+ * visited and visits ~0.4 sqrt(n) vertices from a random start but less than
+ * one step when the direction moves little, which is what happens between
+ * the iterations of one query. Per query, climbing wins from about 24
+ * vertices cold and from 8-16 warm; below that the two are within 15%.
+ * Hence the library's threshold of 32 vertices (Coal's value too). */
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
