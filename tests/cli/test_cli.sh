@@ -313,6 +313,7 @@ for f in empty.off garbage.obj nan.obj huge.ply; do
     expect_error "bad file $f (info)" info "$tmp/$f" --timeout 60
 done
 run "nan message" 2 info "$tmp/nan.obj"; grep -q "not finite" "$tmp/err" && ok || bad "NaN message"
+run "UTF-16 message" 2 info "$tmp/utf16.obj"; grep -q "UTF-16" "$tmp/err" && ok || bad "UTF-16 message"
 
 # Files that crash or hang assimp 5.2 itself (found by fuzzing; tests/cli/data):
 # the import runs in a child process with a time budget, and PLY headers are

@@ -115,6 +115,19 @@ static int walk_node(walk *w, const struct aiNode *node, const xform *parent, in
     return 1;
 }
 
+/* OBJ and OFF are text: a NUL byte in the first 64 KiB means binary garbage or
+ * a wide encoding, which assimp would misread as an empty scene. */
+static int has_nul_byte(const char *path) {
+    enum { HEAD = 65536 };
+    unsigned char *buf = malloc(HEAD);
+    FILE *f = fopen(path, "rb");
+    size_t n = (f && buf) ? fread(buf, 1, HEAD, f) : 0;
+    if (f) fclose(f);
+    int found = buf && memchr(buf, 0, n) != NULL;
+    free(buf);
+    return found;
+}
+
 /* assimp 5.2 loops forever on a PLY whose header never ends: require the
  * end_header line within the first 64 KiB (real headers take a few hundred
  * bytes), as a line of its own. */
@@ -169,6 +182,11 @@ static int precheck_file(const char *path, const char *format, char *err, size_t
     fclose(f);
     if (c == EOF) {
         set_error(err, err_size, "%s: empty file", path);
+        return 0;
+    }
+    if ((strcmp(format, "obj") == 0 || strcmp(format, "off") == 0) && has_nul_byte(path)) {
+        set_error(err, err_size, "%s: NUL bytes in a text %s file: binary data, or a UTF-16 "
+                  "or UTF-32 encoding (save it as UTF-8 or ASCII)", path, format);
         return 0;
     }
     if (strcmp(format, "ply") == 0 && !ply_header_ends(path)) {
