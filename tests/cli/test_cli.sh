@@ -265,6 +265,8 @@ printf '\357\273\277v 0 0 0\r\nv 1 0 0\r\nv 0 1 0\r\nv 0 0 1\r\nf 1 2 3\r\nf 1 2
 distance_is "UTF-8 BOM + CRLF OBJ" 1.5 1e-12 "$tmp/bom.obj" "$C" --pose-b 0 0 3 1 0 0 0
 printf '\357\273\277OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 1 2\n3 0 1 3\n' >"$tmp/bom.off"
 distance_is "UTF-8 BOM OFF" 1.5 1e-12 "$tmp/bom.off" "$C" --pose-b 0 0 3 1 0 0 0
+printf 'v 0 0 0\rv 1 0 0\rv 0 1 0\rv 0 0 0.1\rf 1 2 3\rf 1 2 4\r' >"$tmp/cr.obj"
+distance_is "CR-only line ends, double precision" 2.4 1e-15 "$tmp/cr.obj" "$C" --pose-b 0 0 3 1 0 0 0
 printf '# caf\351 \377 comment\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 2 3\nf 1 2 4\n' >"$tmp/latin1.obj"
 distance_is "Latin-1 comment" 1.5 1e-12 "$tmp/latin1.obj" "$C" --pose-b 0 0 3 1 0 0 0
 run "degenerate hull written" 0 hull "$MESHES/square.off" -o "$tmp/sqhull.off" && ok

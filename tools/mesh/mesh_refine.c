@@ -74,15 +74,20 @@ static const char *content(const char *line) {
     return (*line == '\0' || *line == '\n' || *line == '#') ? NULL : line;
 }
 
-/* OBJ: every "v x y z [w | r g b]" line, in order. */
+/* OBJ: every "v x y z [w | r g b]" line, in order. A lone CR ends a line
+ * too (old Mac files; assimp reads them so). */
 static int read_obj(FILE *f, fvert_list *l) {
     char line[4096];
     while (fgets(line, sizeof line, f)) {
         if (!strchr(line, '\n') && !feof(f)) return 0; /* over-long line: give up */
-        const char *s = content(line);
-        if (!s || s[0] != 'v' || (s[1] != ' ' && s[1] != '\t')) continue;
-        double c[3];
-        if (read3(s + 1, c) != 3 || !list_push(l, c)) return 0;
+        for (char *seg = line, *next; seg; seg = next) {
+            next = strchr(seg, '\r');
+            if (next) *next++ = '\0';
+            const char *s = content(seg);
+            if (!s || s[0] != 'v' || (s[1] != ' ' && s[1] != '\t')) continue;
+            double c[3];
+            if (read3(s + 1, c) != 3 || !list_push(l, c)) return 0;
+        }
     }
     return 1;
 }
@@ -275,10 +280,12 @@ int mesh_refine_double(const char *path, const char *format, mesh_points *points
     if (l.nonfinite >= 0) {
         *nonfinite_vertex = l.nonfinite;
         ok = -1;
-    } else if (ok) {
+    } else if (ok && l.count > 0) { /* no vertex read: nothing to match (and no qsort(NULL)) */
         qsort(l.v, l.count, sizeof *l.v, fvert_cmp);
         ok = substitute(&l, points);
         points->double_precision = ok;
+    } else {
+        ok = 0;
     }
     free(l.v);
     return ok;
