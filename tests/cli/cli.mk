@@ -25,3 +25,19 @@ CHECK_BINS += $(TEST_HULL_SUPPORT) $(TEST_CLI_SCRIPT)
 .PHONY: check-cli
 check-cli: $(TEST_HULL_SUPPORT) $(TEST_CLI_SCRIPT)
 	./$(TEST_HULL_SUPPORT) && ./$(TEST_CLI_SCRIPT)
+
+# By hand: agjk distance on real meshes (tools/fetch-meshes.sh) in random
+# poses against the long double reference of tests/common.
+REAL_MESH_DIR ?= $(OUT)/meshes/random_urdfs
+REAL_MESH_PAIRS ?= 200
+CHECK_REAL_MESHES := $(OUT)/tests/cli/check_real_meshes
+
+$(CHECK_REAL_MESHES): tests/cli/check_real_meshes.c $(OUT)/tools/mesh/libagjkmesh.a \
+                      $(OUT)/tests/common/libtestcommon.a $(LIB_A) tools/mesh/mesh.h $(HEADERS)
+	@mkdir -p $(dir $@)
+	$(CC) $(ALL_CPPFLAGS) $(MESH_CPPFLAGS) -Itests/common $(ALL_CFLAGS) $(LDFLAGS) $< -o $@ \
+	    $(OUT)/tools/mesh/libagjkmesh.a $(OUT)/tests/common/libtestcommon.a $(LIB_A) $(MESH_LIBS)
+
+.PHONY: check-real-meshes
+check-real-meshes: $(CHECK_REAL_MESHES) $(OUT)/tools/cli/agjk
+	./$(CHECK_REAL_MESHES) $(OUT)/tools/cli/agjk $(REAL_MESH_DIR) $(REAL_MESH_PAIRS)
