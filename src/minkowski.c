@@ -41,6 +41,7 @@ void agjk__minkowski_init(agjk__minkowski *md, const agjk_shape *a, const agjk_p
     md->hint_b = hint_b;
     md->bad_support = 0;
     md->magnitude = 0.0;
+    md->scale = 1.0;
     /* R = R_A^T R_B */
     for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 3; ++j)
@@ -48,4 +49,22 @@ void agjk__minkowski_init(agjk__minkowski *md, const agjk_shape *a, const agjk_p
                                  pose_a->rotation[1][i] * pose_b->rotation[1][j] +
                                  pose_a->rotation[2][i] * pose_b->rotation[2][j];
     md->translation = m3_tmul(&pose_a->rotation[0][0], v3_sub(pose_b->translation, pose_a->translation));
+}
+
+double agjk__minkowski_set_scale(agjk__minkowski *md) {
+    double size = md->magnitude;
+    if (v3_maxabs(md->translation) > size) size = v3_maxabs(md->translation);
+    if (md->margin > size) size = md->margin;
+    if (!(size > 0.0)) return 1.0; /* everything at the origin: nothing to scale */
+    int e = -ilogb(size);
+    if (e > 1000) e = 1000; /* keep the factor and its inverse finite */
+    if (e < -1000) e = -1000;
+    double f = ldexp(1.0, e);
+    md->scale *= f;
+    md->translation = v3_scale(md->translation, f);
+    md->margin_a *= f;
+    md->margin_b *= f;
+    md->margin *= f;
+    md->magnitude *= f;
+    return f;
 }

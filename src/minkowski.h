@@ -17,6 +17,10 @@ typedef struct agjk__minkowski {
     agjk_support_fn support_a, support_b;
     const void *data_a, *data_b;
     double rotation[3][3]; /* B's local frame -> A's frame: R_A^T R_B */
+    /* Everything below is in solver units: the caller's lengths times `scale`,
+     * a power of two chosen so that the problem has about unit size (see
+     * agjk__minkowski_set_scale). */
+    double scale;
     agjk_vec3 translation; /* B's origin in A's frame: R_A^T (t_B - t_A) */
     double margin_a, margin_b;
     double margin;         /* margin_a + margin_b */
@@ -32,6 +36,13 @@ int agjk__pose_is_valid(const agjk_pose *pose);
 /* Prepares the relative transform. Shapes and poses must have been validated. */
 void agjk__minkowski_init(agjk__minkowski *md, const agjk_shape *a, const agjk_pose *pose_a,
                           const agjk_shape *b, const agjk_pose *pose_b, int hint_a, int hint_b);
+
+/* Chooses the power of two that brings the problem (support points seen so far,
+ * B's offset, margins) to unit size and converts md to it. Scaling by a power
+ * of two is exact, so answers are equivariant bit for bit, while squares and
+ * volumes of the simplex math neither underflow (a 1e-300 problem) nor
+ * overflow. Returns the factor applied. */
+double agjk__minkowski_set_scale(agjk__minkowski *md);
 
 /* s = argmin_{s in D} <d, s> = S_A(-d) - S_B(d) (paper eq. 7-8), d in A's frame, non-zero. */
 static inline void agjk__minkowski_support(agjk__minkowski *md, agjk_vec3 d, agjk__vertex *out) {
@@ -49,6 +60,8 @@ static inline void agjk__minkowski_support(agjk__minkowski *md, agjk_vec3 d, agj
         pa = v3(0.0, 0.0, 0.0);
         pb = v3(0.0, 0.0, 0.0);
     }
+    pa = v3_scale(pa, md->scale); /* exact: a power of two */
+    pb = v3_scale(pb, md->scale);
     double mag = v3_maxabs(pa) + v3_maxabs(pb);
     if (mag > md->magnitude) md->magnitude = mag;
     out->a = pa;

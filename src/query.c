@@ -92,9 +92,12 @@ static agjk_status run(const agjk_shape *a, const agjk_pose *pose_a, const agjk_
     result->hint_a = md.hint_a;
     result->hint_b = md.hint_b;
     if (out.outcome == AGJK__BAD_SUPPORT) return result->status = AGJK_STATUS_INVALID_INPUT;
+    /* The solver worked in units scaled by md.scale (a power of two): back to
+     * the caller's. */
+    double inv = 1.0 / md.scale;
     if (out.outcome == AGJK__INTERSECTING) {
         if (in.want_witness) {
-            agjk_vec3 mid = to_world(pose_a, v3_scale(v3_add(out.a, out.b), 0.5));
+            agjk_vec3 mid = to_world(pose_a, v3_scale(v3_add(out.a, out.b), 0.5 * inv));
             result->witness_a = mid;
             result->witness_b = mid;
         }
@@ -128,18 +131,18 @@ static agjk_status run(const agjk_shape *a, const agjk_pose *pose_a, const agjk_
         status = lower > md.margin ? AGJK_STATUS_SEPARATED : AGJK_STATUS_CONTACT_WITHIN_TOLERANCE;
     else
         status = AGJK_STATUS_NOT_CONVERGED;
-    result->gap = gap; /* a rounding-level negative gap is reported as 0 */
+    result->gap = gap * inv * inv; /* a rounding-level negative gap is reported as 0 */
     result->normal = m3_mul(&pose_a->rotation[0][0], n_local);
     if (!boolean_mode) {
         double distance = core - md.margin;
         double low = lower - md.margin;
         if (distance < 0.0) distance = 0.0;
         if (low < 0.0) low = 0.0;
-        result->distance = distance;
-        result->bound = distance - low;
+        result->distance = distance * inv;
+        result->bound = (distance - low) * inv;
         if (in.want_witness) {
-            agjk_vec3 wa = v3_add(out.a, v3_scale(n_local, md.margin_a));
-            agjk_vec3 wb = v3_sub(out.b, v3_scale(n_local, md.margin_b));
+            agjk_vec3 wa = v3_scale(v3_add(out.a, v3_scale(n_local, md.margin_a)), inv);
+            agjk_vec3 wb = v3_scale(v3_sub(out.b, v3_scale(n_local, md.margin_b)), inv);
             result->witness_a = to_world(pose_a, wa);
             result->witness_b = to_world(pose_a, wb);
         }

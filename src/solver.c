@@ -29,7 +29,9 @@ static double noise_scale(const agjk__minkowski *md) {
  * is at most g / (2 ||x||), that is g <= tolerance ||x|| (||x|| - margins). */
 static double requested_tolerance(const agjk__solve_input *in, const agjk__minkowski *md,
                                   double x_norm2) {
-    if (!in->relative) return in->tolerance;
+    /* An absolute tolerance is in the caller's length units squared. (It may
+     * overflow to +inf for a tiny problem: any answer then meets it.) */
+    if (!in->relative) return in->tolerance * md->scale * md->scale;
     double x_norm = sqrt(x_norm2);
     double gap = x_norm - md->margin;
     return gap > 0.0 ? in->tolerance * x_norm * gap : 0.0;
@@ -122,12 +124,31 @@ void agjk__solve(agjk__minkowski *md, const agjk__solve_input *in, agjk__solve_o
     out->momentum_stop = -1;
     out->direction = v3(0.0, 0.0, 0.0);
 
+    /* The first support, in direction x_0 for every method (d_{-1} = s_{-1} =
+     * x_0 gives d_0 = x_0), also tells the problem's size: from then on the
+     * solver works in units where it is about 1. */
     agjk__vertex s;
+    agjk__minkowski_support(md, x, &s);
+    ++out->support_calls;
+    {
+        double f = agjk__minkowski_set_scale(md);
+        s.a = v3_scale(s.a, f);
+        s.b = v3_scale(s.b, f);
+        s.w = v3_scale(s.w, f);
+        x = v3_scale(x, f);
+        /* A caller's guess far off the problem's size only gives a direction. */
+        if (!v3_in_range(x) || v3_maxabs(x) < 1.0 / AGJK_MAX_COORDINATE) x = v3_normalize(x);
+        m.d_prev = x;
+        m.s_prev = x;
+    }
     for (int k = 0; k < in->max_iterations; ++k) {
         out->iterations = k + 1;
-        agjk_vec3 d = m.active ? agjk__momentum_direction(&m, k, x) : x;
-        agjk__minkowski_support(md, d, &s);
-        ++out->support_calls;
+        agjk_vec3 d = x;
+        if (k > 0) {
+            if (m.active) d = agjk__momentum_direction(&m, k, x);
+            agjk__minkowski_support(md, d, &s);
+            ++out->support_calls;
+        }
         if (md->bad_support) { out->outcome = AGJK__BAD_SUPPORT; break; }
         if (in->boolean_mode && separates(md, d, s.w)) {
             out->outcome = AGJK__SEPARATED_EARLY;
