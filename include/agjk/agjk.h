@@ -13,5 +13,6 @@
 #include "agjk/types.h"
 #include "agjk/shapes.h"
 #include "agjk/query.h"
+#include "agjk/polytope.h"
 
 #endif /* AGJK_AGJK_H */
