@@ -53,6 +53,23 @@ static int separates(const agjk__minkowski *md, agjk_vec3 d, agjk_vec3 w) {
     return v3_dot(d, w) > v3_norm(d) * (md->margin + noise_scale(md));
 }
 
+/* Checks a fresh support s in direction d: a bad callback output ends the
+ * query, and in Boolean mode so does a separating plane (Alg. 2). Returns 1
+ * when the loop must stop, with out->outcome set. */
+static int support_ends_query(const agjk__minkowski *md, const agjk__solve_input *in, agjk_vec3 d,
+                              const agjk__vertex *s, agjk__solve_output *out) {
+    if (md->bad_support) {
+        out->outcome = AGJK__BAD_SUPPORT;
+        return 1;
+    }
+    if (in->boolean_mode && separates(md, d, s->w)) {
+        out->outcome = AGJK__SEPARATED_EARLY;
+        out->direction = d;
+        return 1;
+    }
+    return 0;
+}
+
 /* Adds s to the active set and projects the origin onto its hull, keeping only
  * the vertices with positive weight (Alg. 4 line 7 / Alg. 5). Returns 1 when
  * the origin is enclosed by a full tetrahedron. */
@@ -149,12 +166,7 @@ void agjk__solve(agjk__minkowski *md, const agjk__solve_input *in, agjk__solve_o
             agjk__minkowski_support(md, d, &s);
             ++out->support_calls;
         }
-        if (md->bad_support) { out->outcome = AGJK__BAD_SUPPORT; break; }
-        if (in->boolean_mode && separates(md, d, s.w)) {
-            out->outcome = AGJK__SEPARATED_EARLY;
-            out->direction = d;
-            break;
-        }
+        if (support_ends_query(md, in, d, &s, out)) break;
         if (have_x) {
             double x2 = v3_norm2(x);
             double requested = requested_tolerance(in, md, x2);
@@ -183,12 +195,7 @@ void agjk__solve(agjk__minkowski *md, const agjk__solve_input *in, agjk__solve_o
                 d = x;
                 agjk__minkowski_support(md, d, &s);
                 ++out->support_calls;
-                if (md->bad_support) { out->outcome = AGJK__BAD_SUPPORT; break; }
-                if (in->boolean_mode && separates(md, d, s.w)) {
-                    out->outcome = AGJK__SEPARATED_EARLY;
-                    out->direction = d;
-                    break;
-                }
+                if (support_ends_query(md, in, d, &s, out)) break;
                 g = 2.0 * v3_dot(x, v3_sub(x, s.w));
             }
             if (!m.active) {
@@ -245,12 +252,7 @@ void agjk__solve(agjk__minkowski *md, const agjk__solve_input *in, agjk__solve_o
          out->outcome == AGJK__AT_ROUNDING) && have_x && !out->gap_valid) {
         agjk__minkowski_support(md, x, &s);
         ++out->support_calls;
-        if (md->bad_support) {
-            out->outcome = AGJK__BAD_SUPPORT;
-        } else if (in->boolean_mode && separates(md, x, s.w)) {
-            out->outcome = AGJK__SEPARATED_EARLY;
-            out->direction = x;
-        } else {
+        if (!support_ends_query(md, in, x, &s, out)) {
             out->gap = 2.0 * v3_dot(x, v3_sub(x, s.w));
             out->gap_valid = 1;
         }
