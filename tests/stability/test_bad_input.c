@@ -520,6 +520,61 @@ START_TEST(test_hostile_support) {
 }
 END_TEST
 
+/* Shapes mixing tiny (denormal) and large coordinates: valid input, so a
+ * verdict or NOT_CONVERGED with every field finite. A solver that rescales by
+ * the magnitude of its first support point overflows when that point is tiny
+ * and a later one large (found by fuzzing: distance inf, bound NaN). */
+START_TEST(test_mixed_magnitudes) {
+    const double tiny[] = {4.9e-324, 4.3e-322, 1e-310, 1e-300, 1e-200, 0.0};
+    const double big[] = {1.0, 6e10, 1e30, MAXC};
+    agjk_options o = agjk_default_options();
+    {
+        /* The fuzzer's case (tests/fuzz/regressions/query/denormal-first-support-inf). */
+        agjk_vec3 v[6] = {{-3.09814453125, -3.09814453125, 0}, {0, 0, 4.3477776834029696e-322},
+                          {-3.09814453125, -3.09814453125, -3.09814453125},
+                          {-3.09814453125, -10, 0}, {0, 6.0947938070976174e-320, -62353515625},
+                          {-62353515625, -62353515625, -62353515625}};
+        agjk_polytope p = {v, 6, NULL, NULL};
+        agjk_shape pt, poly;
+        agjk_pose pose;
+        stab_pose_quat(&pose, 0.5, 0.5, 0.5, 0.5); /* rows (0 0 1) (1 0 0) (0 1 0) */
+        pose.translation.x = pose.translation.y = pose.translation.z = -62353515625;
+        ck_assert_int_eq(agjk_shape_point(&pt), AGJK_STATUS_OK);
+        ck_assert_int_eq(agjk_shape_polytope(&poly, &p), AGJK_STATUS_OK);
+        for (int m = 0; m < 5; m++) {
+            o.method = (agjk_method)m;
+            run_queries("fuzzer's point vs denormal/huge polytope", &pt, &pose, &poly, &pose, &o,
+                        VALID);
+        }
+    }
+    for (size_t i = 0; i < sizeof tiny / sizeof tiny[0]; i++)
+        for (size_t j = 0; j < sizeof big / sizeof big[0]; j++)
+            for (int order = 0; order < 2; order++) {
+                agjk_vec3 v[4] = {{0, 0, tiny[i]}, {-big[j], -big[j], -big[j]},
+                                  {tiny[i], -big[j], 0}, {-big[j], tiny[i], 0}};
+                agjk_polytope p = {v, 4, NULL, NULL};
+                agjk_shape pt, poly, sph;
+                agjk_pose pa, pb;
+                char what[96];
+                if (order) { agjk_vec3 t = v[0]; v[0] = v[1]; v[1] = t; }
+                ck_assert_int_eq(agjk_shape_point(&pt), AGJK_STATUS_OK);
+                ck_assert_int_eq(agjk_shape_polytope(&poly, &p), AGJK_STATUS_OK);
+                ck_assert_int_eq(agjk_shape_sphere(&sph, tiny[i]), AGJK_STATUS_OK);
+                stab_pose_identity(&pa);
+                stab_pose_identity(&pb);
+                snprintf(what, sizeof what, "tiny %g big %g order %d", tiny[i], big[j], order);
+                for (int m = 0; m < 5; m++) {
+                    o.method = (agjk_method)m;
+                    run_queries(what, &pt, &pa, &poly, &pb, &o, VALID);
+                    run_queries(what, &sph, &pa, &poly, &pb, &o, VALID);
+                    pb.translation.x = big[j] / 2;
+                    run_queries(what, &poly, &pa, &poly, &pb, &o, VALID);
+                    pb.translation.x = 0;
+                }
+            }
+}
+END_TEST
+
 /* ---- simplex projection, options init, strings ---- */
 
 START_TEST(test_simplex_projection) {
@@ -778,6 +833,7 @@ static Suite *bad_input_suite(void) {
     tcase_add_test(tc, test_query_null_and_options);
     tcase_add_test(tc, test_query_poses);
     tcase_add_test(tc, test_hostile_support);
+    tcase_add_test(tc, test_mixed_magnitudes);
     tcase_add_test(tc, test_simplex_projection);
     tcase_add_test(tc, test_options_strings_version);
     tcase_add_test(tc, test_polytope_adjacency);
