@@ -42,6 +42,7 @@ void agjk__minkowski_init(agjk__minkowski *md, const agjk_shape *a, const agjk_p
     md->bad_support = 0;
     md->magnitude = 0.0;
     md->scale = 1.0;
+    md->rescaled = 1.0;
     /* R = R_A^T R_B */
     for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 3; ++j)
@@ -51,20 +52,36 @@ void agjk__minkowski_init(agjk__minkowski *md, const agjk_shape *a, const agjk_p
     md->translation = m3_tmul(&pose_a->rotation[0][0], v3_sub(pose_b->translation, pose_a->translation));
 }
 
-double agjk__minkowski_set_scale(agjk__minkowski *md) {
-    double size = md->magnitude;
-    if (v3_maxabs(md->translation) > size) size = v3_maxabs(md->translation);
-    if (md->margin > size) size = md->margin;
-    if (!(size > 0.0)) return 1.0; /* everything at the origin: nothing to scale */
-    int e = -ilogb(size);
-    if (e > 1000) e = 1000; /* keep the factor and its inverse finite */
-    if (e < -1000) e = -1000;
-    double f = ldexp(1.0, e);
+/* Multiplies everything md holds in solver units by f (a power of two). */
+static void apply_factor(agjk__minkowski *md, double f) {
     md->scale *= f;
     md->translation = v3_scale(md->translation, f);
     md->margin_a *= f;
     md->margin_b *= f;
     md->margin *= f;
     md->magnitude *= f;
+}
+
+/* 2^-floor(log2(size)), clamped so that the factor and its inverse stay finite. */
+static double unit_factor(double size) {
+    int e = -ilogb(size);
+    if (e > 1000) e = 1000;
+    if (e < -1000) e = -1000;
+    return ldexp(1.0, e);
+}
+
+double agjk__minkowski_set_scale(agjk__minkowski *md) {
+    double size = md->magnitude;
+    if (v3_maxabs(md->translation) > size) size = v3_maxabs(md->translation);
+    if (md->margin > size) size = md->margin;
+    if (!(size > 0.0)) return 1.0; /* everything at the origin: nothing to scale */
+    double f = unit_factor(size);
+    apply_factor(md, f);
     return f;
+}
+
+void agjk__minkowski_shrink(agjk__minkowski *md, double raw) {
+    double f = unit_factor(raw * md->scale); /* < 1 */
+    apply_factor(md, f);
+    md->rescaled *= f;
 }

@@ -28,6 +28,9 @@ typedef struct agjk__minkowski {
     int bad_support;       /* a callback returned a non-finite or out-of-range point */
     /* Largest |a| + |b| seen, for the floating-point noise estimate. */
     double magnitude;
+    /* Product of the factors agjk__minkowski_shrink applied since the solver
+     * last looked; the solver multiplies its own state by it and resets it. */
+    double rescaled;
 } agjk__minkowski;
 
 /* Checks a pose: finite, rotation orthonormal with det +1 (to 1e-6). */
@@ -36,6 +39,13 @@ int agjk__pose_is_valid(const agjk_pose *pose);
 /* Prepares the relative transform. Shapes and poses must have been validated. */
 void agjk__minkowski_init(agjk__minkowski *md, const agjk_shape *a, const agjk_pose *pose_a,
                           const agjk_shape *b, const agjk_pose *pose_b, int hint_a, int hint_b);
+
+/* Solver units keep support points below this (2^64): sixth powers stay finite. */
+#define AGJK__SOLVER_SIZE_LIMIT 18446744073709551616.0
+
+/* Lowers md->scale by a power of two so that raw * scale is about 1, converts
+ * md, and records the factor in md->rescaled. */
+void agjk__minkowski_shrink(agjk__minkowski *md, double raw);
 
 /* Chooses the power of two that brings the problem (support points seen so far,
  * B's offset, margins) to unit size and converts md to it. Scaling by a power
@@ -60,6 +70,11 @@ static inline void agjk__minkowski_support(agjk__minkowski *md, agjk_vec3 d, agj
         pa = v3(0.0, 0.0, 0.0);
         pb = v3(0.0, 0.0, 0.0);
     }
+    /* A support point far larger than the size the scale was chosen for (a
+     * first support at a denormal vertex, say) would overflow: lower the
+     * scale first; the solver follows (md->rescaled). */
+    double raw = v3_maxabs(pa) + v3_maxabs(pb);
+    if (raw * md->scale > AGJK__SOLVER_SIZE_LIMIT) agjk__minkowski_shrink(md, raw);
     pa = v3_scale(pa, md->scale); /* exact: a power of two */
     pb = v3_scale(pb, md->scale);
     double mag = v3_maxabs(pa) + v3_maxabs(pb);

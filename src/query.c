@@ -114,11 +114,14 @@ static agjk_status run(const agjk_shape *a, const agjk_pose *pose_a, const agjk_
     double gap = out.gap_valid && out.gap > 0.0 ? out.gap : 0.0;
     /* Two certified lower bounds on the core distance ||x*||: the support plane,
      * ||x|| - g / (2 ||x||) = <x, s> / ||x||, and ||x|| - sqrt(g) (eq. 13). */
-    double lower = core - gap / (2.0 * core);
-    double lower2 = core - sqrt(gap);
-    if (lower2 > lower) lower = lower2;
+    double lower = core - sqrt(gap);
+    if (core > 0.0) {
+        double plane = core - gap / (2.0 * core); /* may be -inf for a denormal x */
+        if (plane > lower) lower = plane;
+    }
     lower -= 2.0 * out.noise; /* rounding of x and of the support points */
-    agjk_vec3 n_local = v3_scale(out.x, -1.0 / core); /* from A towards B */
+    /* From A towards B; v3_normalize copes with a denormal x (zero stays zero). */
+    agjk_vec3 n_local = v3_normalize(v3_neg(out.x));
     /* At the floating-point floor an absolute tolerance counts as met (the
      * tolerance is documented to be raised to the floor); a relative one does
      * not, since the relative accuracy it promises was not reached. */

@@ -53,6 +53,24 @@ static int separates(const agjk__minkowski *md, agjk_vec3 d, agjk_vec3 w) {
     return v3_dot(d, w) > v3_norm(d) * (md->margin + noise_scale(md));
 }
 
+/* After a support call that had to lower the scale (agjk__minkowski_shrink),
+ * brings the solver's own state to the new units. Exact: powers of two. */
+static void follow_rescale(agjk__minkowski *md, agjk__vertex *simplex, int count, agjk_vec3 *x,
+                           agjk__momentum *m, agjk_vec3 *d) {
+    double f = md->rescaled;
+    if (f == 1.0) return;
+    md->rescaled = 1.0;
+    for (int i = 0; i < count; ++i) {
+        simplex[i].w = v3_scale(simplex[i].w, f);
+        simplex[i].a = v3_scale(simplex[i].a, f);
+        simplex[i].b = v3_scale(simplex[i].b, f);
+    }
+    *x = v3_scale(*x, f);
+    *d = v3_scale(*d, f);
+    m->d_prev = v3_scale(m->d_prev, f);
+    m->s_prev = v3_scale(m->s_prev, f);
+}
+
 /* Checks a fresh support s in direction d: a bad callback output ends the
  * query, and in Boolean mode so does a separating plane (Alg. 2). Returns 1
  * when the loop must stop, with out->outcome set. */
@@ -165,6 +183,7 @@ void agjk__solve(agjk__minkowski *md, const agjk__solve_input *in, agjk__solve_o
             if (m.active) d = agjk__momentum_direction(&m, k, x);
             agjk__minkowski_support(md, d, &s);
             ++out->support_calls;
+            follow_rescale(md, simplex, count, &x, &m, &d);
         }
         if (support_ends_query(md, in, d, &s, out)) break;
         if (have_x) {
@@ -195,7 +214,13 @@ void agjk__solve(agjk__minkowski *md, const agjk__solve_input *in, agjk__solve_o
                 d = x;
                 agjk__minkowski_support(md, d, &s);
                 ++out->support_calls;
+                follow_rescale(md, simplex, count, &x, &m, &d);
                 if (support_ends_query(md, in, d, &s, out)) break;
+                /* The support may have changed the units: recompute in them. */
+                x2 = v3_norm2(x);
+                requested = requested_tolerance(in, md, x2);
+                floor = floor_tolerance(x2, noise_scale(md));
+                tol = requested > floor ? requested : floor;
                 g = 2.0 * v3_dot(x, v3_sub(x, s.w));
             }
             if (!m.active) {
@@ -250,8 +275,10 @@ void agjk__solve(agjk__minkowski *md, const agjk__solve_input *in, agjk__solve_o
      * on), one support in direction x certifies what was reached. */
     if ((out->outcome == AGJK__ITERATION_CAP || out->outcome == AGJK__STALLED ||
          out->outcome == AGJK__AT_ROUNDING) && have_x && !out->gap_valid) {
+        agjk_vec3 d = x;
         agjk__minkowski_support(md, x, &s);
         ++out->support_calls;
+        follow_rescale(md, simplex, count, &x, &m, &d);
         if (!support_ends_query(md, in, x, &s, out)) {
             out->gap = 2.0 * v3_dot(x, v3_sub(x, s.w));
             out->gap_valid = 1;
