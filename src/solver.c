@@ -166,11 +166,15 @@ void agjk__solve(agjk__minkowski *md, const agjk__solve_input *in, agjk__solve_o
     agjk__minkowski_support(md, x, &s);
     ++out->support_calls;
     {
+        /* A shrink during that first call already put s in new units; x_0,
+         * given in the caller's units, needs it too. */
+        double shrunk = md->rescaled;
+        md->rescaled = 1.0;
         double f = agjk__minkowski_set_scale(md);
         s.a = v3_scale(s.a, f);
         s.b = v3_scale(s.b, f);
         s.w = v3_scale(s.w, f);
-        x = v3_scale(x, f);
+        x = v3_scale(v3_scale(x, shrunk), f);
         /* A caller's guess far off the problem's size only gives a direction. */
         if (!v3_in_range(x) || v3_maxabs(x) < 1.0 / AGJK_MAX_COORDINATE) x = v3_normalize(x);
         m.d_prev = x;
