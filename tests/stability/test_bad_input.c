@@ -575,6 +575,131 @@ START_TEST(test_mixed_magnitudes) {
 }
 END_TEST
 
+/* Concentric shapes with denormal or tiny sizes and translations: both
+ * contain the common centre, so no query may answer SEPARATED. Found by
+ * fuzzing (collide said separated for a flat cone and an ellipsoid with a
+ * 3.9e-312 semi-axis sharing their centre). */
+START_TEST(test_tiny_concentric) {
+    const double tiny[] = {2.7e-93, 1e-200, 3.9e-312, 4.9e-324};
+    {
+        /* The fuzzer's case (regressions/query/denormal-cone-ellipsoid-false-separated). */
+        agjk_cone cone = {212860107.421875, 2.7357906664048309e-93};
+        agjk_ellipsoid ell = {{3258056640.625, 9.9539184570312493e-08, 3.8771769168325531e-312}};
+        agjk_shape sc, se;
+        agjk_pose pa, pb;
+        agjk_result r;
+        ck_assert_int_eq(agjk_shape_cone(&sc, &cone), AGJK_STATUS_OK);
+        ck_assert_int_eq(agjk_shape_ellipsoid(&se, &ell), AGJK_STATUS_OK);
+        stab_pose_identity(&pa);
+        stab_pose_identity(&pb);
+        {
+            static const double ra[3][3] = {
+                {-0.54271150822125724, -0.78716304453209152, 0.29298218404397292},
+                {0.29298218404397292, 0.14949311440064728, 0.94435864404346848},
+                {-0.78716304453209152, 0.59835286417778877, 0.14949311440064728}};
+            static const double rb[3][3] = {
+                {-0.94940329509218557, -0.31383981094091817, 0.01174548154270369},
+                {0.017523767890521486, -0.090278005301328568, -0.9957624211214906},
+                {0.31357024863181837, -0.9451742986493985, 0.091209891709164603}};
+            memcpy(pa.rotation, ra, sizeof ra);
+            memcpy(pb.rotation, rb, sizeof rb);
+        }
+        pa.translation.z = 7.988568138838989e-315;
+        for (int m = 0; m < 5; m++) {
+            agjk_options o = agjk_default_options();
+            o.method = (agjk_method)m;
+            ck_assert_msg(agjk_collide(&sc, &pa, &se, &pb, &o, &r) != AGJK_STATUS_SEPARATED,
+                          "fuzzer's cone/ellipsoid %s: collide says separated",
+                          agjk_method_name(o.method));
+            ck_assert_msg(agjk_distance(&sc, &pa, &se, &pb, &o, &r) != AGJK_STATUS_SEPARATED,
+                          "fuzzer's cone/ellipsoid %s: distance says separated",
+                          agjk_method_name(o.method));
+        }
+    }
+    const double shift[] = {0.0, 8e-315, 5e-312, 1e-300};
+    for (size_t i = 0; i < sizeof tiny / sizeof tiny[0]; i++)
+        for (size_t k = 0; k < sizeof shift / sizeof shift[0]; k++)
+            for (int m = 0; m < 5; m++) {
+                agjk_cone cone = {212860107.421875, tiny[i]};
+                agjk_ellipsoid ell = {{3258056640.625, 9.95e-08, tiny[i]}};
+                agjk_cone seg = {0, tiny[i]};
+                agjk_shape sc, se, ss, pt;
+                agjk_pose pa, pb;
+                agjk_options o = agjk_default_options();
+                agjk_result r;
+                agjk_status st;
+                o.method = (agjk_method)m;
+                ck_assert_int_eq(agjk_shape_cone(&sc, &cone), AGJK_STATUS_OK);
+                ck_assert_int_eq(agjk_shape_ellipsoid(&se, &ell), AGJK_STATUS_OK);
+                ck_assert_int_eq(agjk_shape_cone(&ss, &seg), AGJK_STATUS_OK);
+                ck_assert_int_eq(agjk_shape_point(&pt), AGJK_STATUS_OK);
+                stab_pose_identity(&pa);
+                stab_pose_identity(&pb);
+                /* A shift along z stays inside both (within their thickness)
+                 * only when it is below the tiny size: otherwise skip it. */
+                if (shift[k] > tiny[i]) continue;
+                pa.translation.z = shift[k];
+                st = agjk_collide(&sc, &pa, &se, &pb, &o, &r);
+                ck_assert_msg(st != AGJK_STATUS_SEPARATED,
+                              "cone/ellipsoid size %g shift %g %s: collide says separated",
+                              tiny[i], shift[k], agjk_method_name(o.method));
+                st = agjk_distance(&sc, &pa, &se, &pb, &o, &r);
+                ck_assert_msg(st != AGJK_STATUS_SEPARATED,
+                              "cone/ellipsoid size %g shift %g %s: distance says separated",
+                              tiny[i], shift[k], agjk_method_name(o.method));
+                st = agjk_collide(&ss, &pa, &pt, &pa, &o, &r);
+                ck_assert_msg(st != AGJK_STATUS_SEPARATED,
+                              "segment/point size %g %s: collide says separated", tiny[i],
+                              agjk_method_name(o.method));
+                g_count += 3;
+            }
+}
+END_TEST
+
+/* A separating plane reported by agjk_collide must separate, also when the
+ * translations are denormal (x_0 = c_A - c_B is then a denormal vector).
+ * Found by fuzzing: the plane overlapped the shapes by 2.5e10. Checked in
+ * long double with the independent supports of stab_util. */
+START_TEST(test_denormal_translation_plane) {
+    static agjk_vec3 v[1] = {{8.8288253015836587e-280, 41958618.1640625, 4.1616821289062499e-07}};
+    ref_shape a, b;
+    agjk_shape sa, sb;
+    agjk_pose pa = {{{-0.068296821024357968, 0.6773475494246648, -0.73248606916880554},
+                     {0.99721914771710063, 0.068296821024357746, -0.029824749191672606},
+                     {0.029824749191672606, -0.73248606916880554, -0.68012840170756417}},
+                    {0, 0, 1.2598673968951787e-321}};
+    agjk_pose pb = {{{0.00077820964507213652, 0.99999939391772186, -0.00077881572735022386},
+                     {-0.00077881572735022386, -0.00077820964507213652, -0.99999939391772186},
+                     {-0.99999939391772186, 0.00077881572735022386, 0.00077820964507213652}},
+                    {0, 5.3474293919676782e-312, 0}};
+    memset(&a, 0, sizeof a);
+    memset(&b, 0, sizeof b);
+    a.kind = REF_POLYTOPE;
+    a.vertices = v;
+    a.vertex_count = 1;
+    b.kind = REF_ELLIPSOID;
+    b.p[0] = 419586181640.625;
+    b.p[1] = 41.8670654296875;
+    b.p[2] = 445861816.40625;
+    ck_assert_int_eq(stab_make_shape(&a, &sa), AGJK_STATUS_OK);
+    ck_assert_int_eq(stab_make_shape(&b, &sb), AGJK_STATUS_OK);
+    for (int m = 0; m < 5; m++) {
+        agjk_options o = agjk_default_options();
+        agjk_result r;
+        o.method = (agjk_method)m;
+        if (agjk_collide(&sa, &pa, &sb, &pb, &o, &r) == AGJK_STATUS_SEPARATED) {
+            long double n[3] = {r.normal.x, r.normal.y, r.normal.z};
+            long double mn[3] = {-n[0], -n[1], -n[2]}, p[3];
+            long double gap = -(stab_support_world(&a, &pa, n, p) + stab_support_world(&b, &pb, mn, p));
+            /* Rounding of a unit normal moves h by ~eps x 4e11 = 1e-4. */
+            ck_assert_msg(gap > -1.0, "%s: the reported plane overlaps the shapes by %Lg",
+                          agjk_method_name(o.method), -gap);
+        }
+        g_count++;
+    }
+}
+END_TEST
+
 /* ---- simplex projection, options init, strings ---- */
 
 START_TEST(test_simplex_projection) {
@@ -834,6 +959,8 @@ static Suite *bad_input_suite(void) {
     tcase_add_test(tc, test_query_poses);
     tcase_add_test(tc, test_hostile_support);
     tcase_add_test(tc, test_mixed_magnitudes);
+    tcase_add_test(tc, test_tiny_concentric);
+    tcase_add_test(tc, test_denormal_translation_plane);
     tcase_add_test(tc, test_simplex_projection);
     tcase_add_test(tc, test_options_strings_version);
     tcase_add_test(tc, test_polytope_adjacency);
