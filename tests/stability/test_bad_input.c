@@ -579,6 +579,49 @@ END_TEST
  * contain the common centre, so no query may answer SEPARATED. Found by
  * fuzzing (collide said separated for a flat cone and an ellipsoid with a
  * 3.9e-312 semi-axis sharing their centre). */
+/* Large shapes sharing their centre, one shifted by a denormal: they overlap
+ * by ~1e5, so SEPARATED is a plain lie (found by fuzzing). */
+START_TEST(test_denormal_shift_concentric) {
+    {
+        /* Large shapes sharing their centre, one shifted by a denormal
+         * (regressions/query/denormal-shift-cone-box-false-separated). */
+        agjk_cone cone = {196960.44921875, 505859375000};
+        agjk_box box = {{94433593750, 0.050585937500000004, 999969.482421875}};
+        static const double ra[3][3] = {
+            {-0.6022802391698332, -0.32747297662990377, 0.72802469950042137},
+            {0.72802469950042137, 0.14879320706658494, 0.6692089497669329},
+            {-0.32747297662990377, 0.93307128940290029, 0.14879320706658494}};
+        static const double rb[3][3] = {
+            {-0.0028991897205428163, 0.0029076195322637055, 0.99999157018827911},
+            {0.99999157018827911, -0.0028991897205428163, 0.0029076195322637055},
+            {0.0029076195322637055, 0.99999157018827911, -0.0028991897205428163}};
+        agjk_shape sc, sb;
+        agjk_pose pa, pb;
+        agjk_result r;
+        ck_assert_int_eq(agjk_shape_cone(&sc, &cone), AGJK_STATUS_OK);
+        ck_assert_int_eq(agjk_shape_box(&sb, &box), AGJK_STATUS_OK);
+        ck_assert_int_eq(agjk_shape_set_margin(&sb, 9.99756e-08), AGJK_STATUS_OK);
+        stab_pose_identity(&pa);
+        stab_pose_identity(&pb);
+        memcpy(pa.rotation, ra, sizeof ra);
+        memcpy(pb.rotation, rb, sizeof rb);
+        for (int k = 0; k < 2; k++) {
+            pa.translation.z = k ? 5.4323092096489346e-312 : 0.0;
+            for (int m = 0; m < 5; m++) {
+                agjk_options o = agjk_default_options();
+                o.method = (agjk_method)m;
+                ck_assert_msg(agjk_collide(&sc, &pa, &sb, &pb, &o, &r) != AGJK_STATUS_SEPARATED,
+                              "concentric cone/box shifted by %g, %s: collide says separated",
+                              pa.translation.z, agjk_method_name(o.method));
+                ck_assert_msg(agjk_distance(&sc, &pa, &sb, &pb, &o, &r) != AGJK_STATUS_SEPARATED,
+                              "concentric cone/box shifted by %g, %s: distance says separated",
+                              pa.translation.z, agjk_method_name(o.method));
+            }
+        }
+    }
+}
+END_TEST
+
 START_TEST(test_tiny_concentric) {
     const double tiny[] = {2.7e-93, 1e-200, 3.9e-312, 4.9e-324};
     {
@@ -960,6 +1003,7 @@ static Suite *bad_input_suite(void) {
     tcase_add_test(tc, test_hostile_support);
     tcase_add_test(tc, test_mixed_magnitudes);
     tcase_add_test(tc, test_tiny_concentric);
+    tcase_add_test(tc, test_denormal_shift_concentric);
     tcase_add_test(tc, test_denormal_translation_plane);
     tcase_add_test(tc, test_simplex_projection);
     tcase_add_test(tc, test_options_strings_version);
