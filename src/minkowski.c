@@ -75,6 +75,9 @@ double agjk__minkowski_set_scale(agjk__minkowski *md) {
     if (v3_maxabs(md->translation) > size) size = v3_maxabs(md->translation);
     if (md->margin > size) size = md->margin;
     if (!(size > 0.0)) return 1.0; /* everything at the origin: nothing to scale */
+    /* Problems of ordinary size stay in the caller's units (no cost, and power-
+     * of-two scalings commute with rounding anyway); only extreme ones move. */
+    if (size >= 0x1p-100 && size <= 0x1p100) return 1.0;
     double f = unit_factor(size);
     apply_factor(md, f);
     return f;

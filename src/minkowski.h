@@ -40,8 +40,8 @@ int agjk__pose_is_valid(const agjk_pose *pose);
 void agjk__minkowski_init(agjk__minkowski *md, const agjk_shape *a, const agjk_pose *pose_a,
                           const agjk_shape *b, const agjk_pose *pose_b, int hint_a, int hint_b);
 
-/* Solver units keep support points below this (2^64): sixth powers stay finite. */
-#define AGJK__SOLVER_SIZE_LIMIT 18446744073709551616.0
+/* Solver units keep support points below this (2^100): sixth powers stay finite. */
+#define AGJK__SOLVER_SIZE_LIMIT 0x1p100
 
 /* Lowers md->scale by a power of two so that raw * scale is about 1, converts
  * md, and records the factor in md->rescaled. */
@@ -56,10 +56,13 @@ double agjk__minkowski_set_scale(agjk__minkowski *md);
 
 /* s = argmin_{s in D} <d, s> = S_A(-d) - S_B(d) (paper eq. 7-8), d in A's frame, non-zero. */
 static inline void agjk__minkowski_support(agjk__minkowski *md, agjk_vec3 d, agjk__vertex *out) {
-    /* Callbacks get directions of reasonable size: a denormal or huge one would
-     * overflow the first 1/|d| a support function computes. */
+    /* Callbacks get directions of sensible size, rescaled to max |d_i| in
+     * [1, 2) by a power of two (exact) when needed: a tiny direction times the
+     * tiny coordinates of a tiny problem (md->scale > 1) underflows to +-0 and
+     * support comparisons lose their sign; a huge one overflows. */
     double dm = v3_maxabs(d);
-    if (dm < 1e-100 || dm > 1e100) d = v3_normalize(d);
+    if ((dm < 0x1p-60 || dm > 0x1p100 || (md->scale > 1.0 && dm < 1.0)) && dm > 0.0)
+        d = v3_scale_to_unit(d, dm);
     agjk_vec3 na = v3_neg(d);
     agjk_vec3 db = m3_tmul(&md->rotation[0][0], d);
     agjk_vec3 pa, pb;

@@ -50,7 +50,10 @@ static double floor_tolerance(double x_norm2, double noise) { return 2.0 * sqrt(
 /* Alg. 2: the plane of normal d through s separates D (inflated by the margins)
  * from the origin when <d, s> > ||d|| (margin + rounding). */
 static int separates(const agjk__minkowski *md, agjk_vec3 d, agjk_vec3 w) {
-    return v3_dot(d, w) > v3_norm(d) * (md->margin + noise_scale(md));
+    /* The unit direction, as the support function saw it: a denormal d has
+     * too few significant bits for <d, w> to mean anything. */
+    agjk_vec3 n = v3_normalize(d);
+    return v3_dot(n, w) > md->margin + noise_scale(md);
 }
 
 /* After a support call that had to lower the scale (agjk__minkowski_shrink),
@@ -163,7 +166,12 @@ void agjk__solve(agjk__minkowski *md, const agjk__solve_input *in, agjk__solve_o
      * x_0 gives d_0 = x_0), also tells the problem's size: from then on the
      * solver works in units where it is about 1. */
     agjk__vertex s;
-    agjk__minkowski_support(md, x, &s);
+    {
+        /* The problem's size is not known yet: give the callbacks a unit-size
+         * direction (exact power-of-two scaling of x_0). */
+        double m0 = v3_maxabs(x);
+        agjk__minkowski_support(md, m0 > 0.0 ? v3_scale_to_unit(x, m0) : x, &s);
+    }
     ++out->support_calls;
     {
         /* A shrink during that first call already put s in new units; x_0,
@@ -174,9 +182,12 @@ void agjk__solve(agjk__minkowski *md, const agjk__solve_input *in, agjk__solve_o
         s.a = v3_scale(s.a, f);
         s.b = v3_scale(s.b, f);
         s.w = v3_scale(s.w, f);
-        x = v3_scale(v3_scale(x, shrunk), f);
-        /* A caller's guess far off the problem's size only gives a direction. */
-        if (!v3_in_range(x) || v3_maxabs(x) < 1.0 / AGJK_MAX_COORDINATE) x = v3_normalize(x);
+        agjk_vec3 x_units = v3_scale(v3_scale(x, shrunk), f);
+        /* A guess far off the problem's size (a caller's, or a denormal offset
+         * that underflows when scaled) only gives a direction. */
+        if (!v3_in_range(x_units) || v3_maxabs(x_units) < 1.0 / AGJK_MAX_COORDINATE)
+            x_units = v3_normalize(x);
+        x = x_units;
         m.d_prev = x;
         m.s_prev = x;
     }

@@ -45,6 +45,18 @@ static inline double v3_maxabs(agjk_vec3 a) {
 }
 /* Unit vector along a, or the zero vector when a is zero. Scales first so that
  * tiny or huge vectors neither underflow nor overflow in the squared norm. */
+/* a * 2^-ilogb(m) for m = max |a_i| > 0: max |a_i| lands in [1, 2), exactly
+ * (a power of two), in two steps when 2^-ilogb(m) alone would overflow
+ * (m denormal). */
+static inline agjk_vec3 v3_scale_to_unit(agjk_vec3 a, double m) {
+    int e = -ilogb(m);
+    if (e > 1000) {
+        a = v3_scale(a, ldexp(1.0, 1000));
+        e -= 1000;
+    }
+    return v3_scale(a, ldexp(1.0, e));
+}
+
 /* a / m for m > 0, without overflowing 1/m when m is denormal. */
 static inline agjk_vec3 v3_div(agjk_vec3 a, double m) {
     if (m >= 1e-300) return v3_scale(a, 1.0 / m); /* 1/m finite: multiply */
