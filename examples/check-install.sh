@@ -7,7 +7,7 @@ tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 # A plain build of its own: variables of a calling make (a sanitizer build's OUT,
 # OPT, LDFLAGS) must not leak into what a user would install.
-env -u MAKEFLAGS -u MFLAGS -u MAKEOVERRIDES -u MAKELEVEL \
+env -u MAKEFLAGS -u MFLAGS -u MAKEOVERRIDES -u MAKELEVEL -u OUT -u OPT -u CFLAGS -u CPPFLAGS -u LDFLAGS \
     make -s -C "$top" OUT="$tmp/out" install PREFIX="$tmp/prefix" >/dev/null
 export PKG_CONFIG_PATH="$tmp/prefix/lib/pkgconfig"
 cc=${CC:-cc}
