@@ -28,6 +28,15 @@ int agjk__pose_is_valid(const agjk_pose *pose) {
     return det > 0.0;
 }
 
+/* Limits of the common support path for the current scale (see agjk__minkowski). */
+static void set_limits(agjk__minkowski *md) {
+    double limit = AGJK__SOLVER_SIZE_LIMIT / md->scale;
+    md->raw_limit = limit < AGJK_MAX_COORDINATE ? limit : AGJK_MAX_COORDINATE;
+    /* A tiny problem (scale > 1) needs unit-size directions: a small direction
+     * times its tiny coordinates would underflow and lose the sign. */
+    md->direction_min = md->scale > 1.0 ? 1.0 : AGJK__DIRECTION_MIN;
+}
+
 void agjk__minkowski_init(agjk__minkowski *md, const agjk_shape *a, const agjk_pose *pose_a,
                           const agjk_shape *b, const agjk_pose *pose_b, int hint_a, int hint_b) {
     md->support_a = a->support;
@@ -40,7 +49,6 @@ void agjk__minkowski_init(agjk__minkowski *md, const agjk_shape *a, const agjk_p
     md->hint_a = hint_a;
     md->hint_b = hint_b;
     md->bad_support = 0;
-    md->magnitude = 0.0;
     md->scale = 1.0;
     md->rescaled = 1.0;
     /* R = R_A^T R_B */
@@ -50,16 +58,24 @@ void agjk__minkowski_init(agjk__minkowski *md, const agjk_shape *a, const agjk_p
                                  pose_a->rotation[1][i] * pose_b->rotation[1][j] +
                                  pose_a->rotation[2][i] * pose_b->rotation[2][j];
     md->translation = m3_tmul(&pose_a->rotation[0][0], v3_sub(pose_b->translation, pose_a->translation));
+    md->translation_size = v3_maxabs(md->translation);
+    agjk__minkowski_grow(md, 0.0);
+    set_limits(md);
+    /* The problem's size is unknown until the first support: unit-size
+     * directions until agjk__minkowski_set_scale has seen it. */
+    md->direction_min = 1.0;
 }
 
 /* Multiplies everything md holds in solver units by f (a power of two). */
 static void apply_factor(agjk__minkowski *md, double f) {
     md->scale *= f;
     md->translation = v3_scale(md->translation, f);
+    md->translation_size *= f;
     md->margin_a *= f;
     md->margin_b *= f;
     md->margin *= f;
-    md->magnitude *= f;
+    agjk__minkowski_grow(md, md->magnitude * f);
+    set_limits(md);
 }
 
 /* 2^-floor(log2(size)), clamped so that the factor and its inverse stay finite. */
@@ -72,19 +88,41 @@ static double unit_factor(double size) {
 
 double agjk__minkowski_set_scale(agjk__minkowski *md) {
     double size = md->magnitude;
-    if (v3_maxabs(md->translation) > size) size = v3_maxabs(md->translation);
+    if (md->translation_size > size) size = md->translation_size;
     if (md->margin > size) size = md->margin;
-    if (!(size > 0.0)) return 1.0; /* everything at the origin: nothing to scale */
     /* Problems of ordinary size stay in the caller's units (no cost, and power-
      * of-two scalings commute with rounding anyway); only extreme ones move. */
-    if (size >= 0x1p-100 && size <= 0x1p100) return 1.0;
-    double f = unit_factor(size);
-    apply_factor(md, f);
+    double f = 1.0;
+    if (size > 0.0 && (size < 0x1p-100 || size > 0x1p100)) {
+        f = unit_factor(size);
+        apply_factor(md, f);
+    }
+    set_limits(md);
     return f;
 }
 
-void agjk__minkowski_shrink(agjk__minkowski *md, double raw) {
+static void shrink(agjk__minkowski *md, double raw) {
     double f = unit_factor(raw * md->scale); /* < 1 */
     apply_factor(md, f);
     md->rescaled *= f;
+}
+
+agjk_vec3 agjk__minkowski_rescue_direction(const agjk__minkowski *md, agjk_vec3 d) {
+    (void)md;
+    double dm = v3_maxabs(d);
+    return dm > 0.0 && dm <= DBL_MAX ? v3_scale_to_unit(d, dm) : d;
+}
+
+void agjk__minkowski_rescue_points(agjk__minkowski *md, agjk_vec3 *pa, agjk_vec3 *pb) {
+    if (!v3_in_range(*pa) || !v3_in_range(*pb)) {
+        md->bad_support = 1;
+        *pa = v3(0.0, 0.0, 0.0);
+        *pb = v3(0.0, 0.0, 0.0);
+        return;
+    }
+    /* A support point far larger than the size the scale was chosen for (a
+     * first support at a denormal vertex, say) would overflow: lower the
+     * scale; the solver follows (md->rescaled). */
+    double raw = v3_maxabs(*pa) + v3_maxabs(*pb);
+    if (raw * md->scale > AGJK__SOLVER_SIZE_LIMIT) shrink(md, raw);
 }

@@ -19,15 +19,24 @@ typedef struct agjk__minkowski {
     double rotation[3][3]; /* B's local frame -> A's frame: R_A^T R_B */
     /* Everything below is in solver units: the caller's lengths times `scale`,
      * a power of two chosen so that the problem has about unit size (see
-     * agjk__minkowski_set_scale). */
+     * agjk__minkowski_set_scale). For problems of ordinary size scale is 1. */
     double scale;
     agjk_vec3 translation; /* B's origin in A's frame: R_A^T (t_B - t_A) */
+    double translation_size; /* max |translation_i| */
     double margin_a, margin_b;
     double margin;         /* margin_a + margin_b */
     int hint_a, hint_b;
     int bad_support;       /* a callback returned a non-finite or out-of-range point */
-    /* Largest |a| + |b| seen, for the floating-point noise estimate. */
+    /* Largest |a| + |b| (max norms) seen, and the floating-point error scale of
+     * a computed point of D that follows from it: noise = 4 eps (magnitude +
+     * translation_size). Updated only when a support point is larger. */
     double magnitude;
+    double noise;
+    /* The common path of agjk__minkowski_support needs no rescue when the raw
+     * support points' 1-norms add up to at most raw_limit (caller's units) and the
+     * direction's max |d_i| lies in [direction_min, AGJK__DIRECTION_MAX]. */
+    double raw_limit;
+    double direction_min;
     /* Product of the factors agjk__minkowski_shrink applied since the solver
      * last looked; the solver multiplies its own state by it and resets it. */
     double rescaled;
@@ -42,49 +51,68 @@ void agjk__minkowski_init(agjk__minkowski *md, const agjk_shape *a, const agjk_p
 
 /* Solver units keep support points below this (2^100): sixth powers stay finite. */
 #define AGJK__SOLVER_SIZE_LIMIT 0x1p100
-
-/* Lowers md->scale by a power of two so that raw * scale is about 1, converts
- * md, and records the factor in md->rescaled. */
-void agjk__minkowski_shrink(agjk__minkowski *md, double raw);
+/* Directions handed to callbacks keep max |d_i| in [2^-60, 2^100] (or [1, 2^100]
+ * while the problem's size is unknown or tiny): products with support
+ * coordinates then neither underflow nor overflow. */
+#define AGJK__DIRECTION_MIN 0x1p-60
+#define AGJK__DIRECTION_MAX 0x1p100
 
 /* Chooses the power of two that brings the problem (support points seen so far,
  * B's offset, margins) to unit size and converts md to it. Scaling by a power
  * of two is exact, so answers are equivariant bit for bit, while squares and
  * volumes of the simplex math neither underflow (a 1e-300 problem) nor
- * overflow. Returns the factor applied. */
+ * overflow. Returns the factor applied (1 for problems of ordinary size). */
 double agjk__minkowski_set_scale(agjk__minkowski *md);
 
-/* s = argmin_{s in D} <d, s> = S_A(-d) - S_B(d) (paper eq. 7-8), d in A's frame, non-zero. */
-static inline void agjk__minkowski_support(agjk__minkowski *md, agjk_vec3 d, agjk__vertex *out) {
-    /* Callbacks get directions of sensible size, rescaled to max |d_i| in
-     * [1, 2) by a power of two (exact) when needed: a tiny direction times the
-     * tiny coordinates of a tiny problem (md->scale > 1) underflows to +-0 and
-     * support comparisons lose their sign; a huge one overflows. */
+/* The rare paths of agjk__minkowski_support, out of line: a direction outside
+ * the safe range is brought to unit size; raw support points beyond raw_limit
+ * are either rejected (non-finite or beyond AGJK_MAX_COORDINATE: bad_support)
+ * or make the scale shrink (md->rescaled records the factor). */
+agjk_vec3 agjk__minkowski_rescue_direction(const agjk__minkowski *md, agjk_vec3 d);
+void agjk__minkowski_rescue_points(agjk__minkowski *md, agjk_vec3 *pa, agjk_vec3 *pb);
+
+/* Records a larger magnitude (solver units) and the noise that follows. */
+static inline void agjk__minkowski_grow(agjk__minkowski *md, double magnitude) {
+    md->magnitude = magnitude;
+    md->noise = 4.0 * DBL_EPSILON * (magnitude + md->translation_size);
+}
+
+/* s = argmin_{s in D} <d, s> = S_A(-d) - S_B(d) (paper eq. 7-8), d in A's frame,
+ * non-zero and finite. Writes s.a and s.b only when want_ab (witness points or
+ * a caller that keeps the simplex's shape points). */
+static inline void agjk__minkowski_support(agjk__minkowski *md, agjk_vec3 d, agjk__vertex *out,
+                                           int want_ab) {
     double dm = v3_maxabs(d);
-    if ((dm < 0x1p-60 || dm > 0x1p100 || (md->scale > 1.0 && dm < 1.0)) && dm > 0.0)
-        d = v3_scale_to_unit(d, dm);
+    if (!(dm >= md->direction_min && dm <= AGJK__DIRECTION_MAX))
+        d = agjk__minkowski_rescue_direction(md, d);
     agjk_vec3 na = v3_neg(d);
     agjk_vec3 db = m3_tmul(&md->rotation[0][0], d);
     agjk_vec3 pa, pb;
     md->support_a(md->data_a, &na, &pa, &md->hint_a);
     md->support_b(md->data_b, &db, &pb, &md->hint_b);
-    if (!v3_in_range(pa) || !v3_in_range(pb)) {
-        md->bad_support = 1;
-        pa = v3(0.0, 0.0, 0.0);
-        pb = v3(0.0, 0.0, 0.0);
+    /* One test covers NaN, Inf, AGJK_MAX_COORDINATE and the solver's size
+     * limit: the 1-norm propagates NaN and bounds every coordinate. */
+    double l1 = v3_norm1(pa) + v3_norm1(pb);
+    if (!(l1 <= md->raw_limit)) {
+        agjk__minkowski_rescue_points(md, &pa, &pb);
+        l1 = v3_norm1(pa) + v3_norm1(pb);
     }
-    /* A support point far larger than the size the scale was chosen for (a
-     * first support at a denormal vertex, say) would overflow: lower the
-     * scale first; the solver follows (md->rescaled). */
-    double raw = v3_maxabs(pa) + v3_maxabs(pb);
-    if (raw * md->scale > AGJK__SOLVER_SIZE_LIMIT) agjk__minkowski_shrink(md, raw);
-    pa = v3_scale(pa, md->scale); /* exact: a power of two */
-    pb = v3_scale(pb, md->scale);
-    double mag = v3_maxabs(pa) + v3_maxabs(pb);
-    if (mag > md->magnitude) md->magnitude = mag;
-    out->a = pa;
-    out->b = v3_add(m3_mul(&md->rotation[0][0], pb), md->translation);
-    out->w = v3_sub(out->a, out->b);
+    if (md->scale != 1.0) {
+        pa = v3_scale(pa, md->scale); /* exact: a power of two */
+        pb = v3_scale(pb, md->scale);
+        l1 *= md->scale;
+    }
+    /* The max-norm magnitude is at most the 1-norm: only a larger 1-norm can grow it. */
+    if (l1 > md->magnitude) {
+        double raw = v3_maxabs(pa) + v3_maxabs(pb);
+        if (raw > md->magnitude) agjk__minkowski_grow(md, raw);
+    }
+    agjk_vec3 b = v3_add(m3_mul(&md->rotation[0][0], pb), md->translation);
+    out->w = v3_sub(pa, b);
+    if (want_ab) {
+        out->a = pa;
+        out->b = b;
+    }
 }
 
 #endif

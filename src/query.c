@@ -112,6 +112,10 @@ static agjk_status run(const agjk_shape *a, const agjk_pose *pose_a, const agjk_
     /* Converged, capped or stalled: x != 0 and gap_valid (see the solver). */
     double core = v3_norm(out.x);
     double gap = out.gap_valid && out.gap > 0.0 ? out.gap : 0.0;
+    /* The rounding of x and of the support points (the relative transform, the
+     * combination of simplex vertices): the exact point of D that x stands for
+     * lies within this of x, so it widens the interval at both ends. */
+    double rounding = 2.0 * out.noise;
     /* Two certified lower bounds on the core distance ||x*||: the support plane,
      * ||x|| - g / (2 ||x||) = <x, s> / ||x||, and ||x|| - sqrt(g) (eq. 13). */
     double lower = core - sqrt(gap);
@@ -119,7 +123,9 @@ static agjk_status run(const agjk_shape *a, const agjk_pose *pose_a, const agjk_
         double plane = core - gap / (2.0 * core); /* may be -inf for a denormal x */
         if (plane > lower) lower = plane;
     }
-    lower -= 2.0 * out.noise; /* rounding of x and of the support points */
+    lower -= rounding;
+    /* ||x*|| <= ||x|| for the exact x; the computed one may be short by the rounding. */
+    double upper = core + rounding;
     /* From A towards B; v3_normalize copes with a denormal x (zero stays zero). */
     agjk_vec3 n_local = v3_normalize(v3_neg(out.x));
     /* At the floating-point floor an absolute tolerance counts as met (the
@@ -127,6 +133,14 @@ static agjk_status run(const agjk_shape *a, const agjk_pose *pose_a, const agjk_
      * not, since the relative accuracy it promises was not reached. */
     int converged = out.outcome == AGJK__CONVERGED ||
                     (out.outcome == AGJK__AT_FLOOR && !in.relative);
+    double distance = upper - md.margin;
+    double low = lower - md.margin;
+    if (distance < 0.0) distance = 0.0;
+    if (low < 0.0) low = 0.0;
+    /* Relative mode claims |distance - d*| <= d* tolerance / 2 only when the
+     * whole certified interval, rounding included, shows it. */
+    if (converged && in.relative && !(distance - low <= 0.5 * in.tolerance * low))
+        converged = 0;
     agjk_status status;
     if (out.outcome == AGJK__AT_ROUNDING)
         status = AGJK_STATUS_CONTACT_WITHIN_TOLERANCE;
@@ -134,13 +148,13 @@ static agjk_status run(const agjk_shape *a, const agjk_pose *pose_a, const agjk_
         status = lower > md.margin ? AGJK_STATUS_SEPARATED : AGJK_STATUS_CONTACT_WITHIN_TOLERANCE;
     else
         status = AGJK_STATUS_NOT_CONVERGED;
+    if (status == AGJK_STATUS_NOT_CONVERGED)
+        result->stop_reason = out.outcome == AGJK__ITERATION_CAP ? AGJK_STOP_ITERATION_CAP
+                              : out.outcome == AGJK__STALLED      ? AGJK_STOP_NO_PROGRESS
+                                                                  : AGJK_STOP_BELOW_PRECISION;
     result->gap = gap * inv * inv; /* a rounding-level negative gap is reported as 0 */
     result->normal = m3_mul(&pose_a->rotation[0][0], n_local);
     if (!boolean_mode) {
-        double distance = core - md.margin;
-        double low = lower - md.margin;
-        if (distance < 0.0) distance = 0.0;
-        if (low < 0.0) low = 0.0;
         result->distance = distance * inv;
         result->bound = (distance - low) * inv;
         if (in.want_witness) {

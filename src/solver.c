@@ -12,34 +12,15 @@
  * (eq. 12-13), which certifies ||x - x*||^2 <= g. With momentum, g computed with
  * s = S_D(d_k) is not a certificate; it only triggers the fallback (eq. 28-30).
  *
+ * The problem's scale is settled by the first support, before the loop; the
+ * loop itself only meets a rescale in the rare case of a later support point
+ * far larger than the first ones (one predicted test per support).
+ *
  * Every loop is bounded by max_iterations; the simplex projection is
  * non-iterative. No allocation: the simplex lives on the stack. */
 #include "solver.h"
 
 #include "simplex.h"
-
-/* Error scale of a computed point of D: a few ulps of the magnitudes involved
- * (the support points and B's translation in A's frame). */
-static double noise_scale(const agjk__minkowski *md) {
-    return 4.0 * DBL_EPSILON * (md->magnitude + v3_maxabs(md->translation));
-}
-
-/* The requested tolerance on g. Relative mode asks for a distance error of at
- * most tolerance/2 times the distance ||x|| - margins: since the distance error
- * is at most g / (2 ||x||), that is g <= tolerance ||x|| (||x|| - margins). */
-static double requested_tolerance(const agjk__solve_input *in, const agjk__minkowski *md,
-                                  double x_norm2) {
-    /* An absolute tolerance is in the caller's length units squared. (It may
-     * overflow to +inf for a tiny problem: any answer then meets it.) */
-    if (!in->relative) return in->tolerance * md->scale * md->scale;
-    double x_norm = sqrt(x_norm2);
-    double gap = x_norm - md->margin;
-    return gap > 0.0 ? in->tolerance * x_norm * gap : 0.0;
-}
-
-/* What the floating-point evaluation of g can resolve: 2 ||x|| times the error
- * of a support point. Below it the solver would only churn at the noise. */
-static double floor_tolerance(double x_norm2, double noise) { return 2.0 * sqrt(x_norm2) * noise; }
 
 /* Momentum pays off in the first few dozen iterations (paper, Fig. 4-6); past
  * this many, a momentum direction that has not reached the Alg. 6 fallback is
@@ -47,43 +28,69 @@ static double floor_tolerance(double x_norm2, double noise) { return 2.0 * sqrt(
  * iterations to reach g <= eps), and plain GJK finishes faster. */
 #define MOMENTUM_BUDGET 64
 
-/* Alg. 2: the plane of normal d through s separates D (inflated by the margins)
- * from the origin when <d, s> > ||d|| (margin + rounding). */
-static int separates(const agjk__minkowski *md, agjk_vec3 d, agjk_vec3 w) {
-    /* The unit direction, as the support function saw it: a denormal d has
-     * too few significant bits for <d, w> to mean anything. */
-    agjk_vec3 n = v3_normalize(d);
-    return v3_dot(n, w) > md->margin + noise_scale(md);
+/* The loop's state: the active set (points of D in w, and when witness points
+ * are wanted the points of A and B they came from), the iterate, momentum. */
+typedef struct solver {
+    agjk__minkowski *md;
+    const agjk__solve_input *in;
+    agjk_vec3 w[4], a[4], b[4];
+    double lambda[4];
+    int count;
+    agjk_vec3 x;
+    double x2;          /* ||x||^2 */
+    agjk__momentum m;
+    double abs_tolerance; /* absolute mode: the tolerance in solver units squared */
+} solver;
+
+/* One Minkowski support in direction d, and the rare follow-up when it had to
+ * lower the scale (agjk__minkowski_rescue_points): the solver's own state goes
+ * to the new units too. Exact: powers of two. */
+static void support(solver *sv, agjk_vec3 *d, agjk__vertex *s) {
+    agjk__minkowski *md = sv->md;
+    agjk__minkowski_support(md, *d, s, sv->in->want_witness);
+    if (md->rescaled == 1.0) return;
+    double f = md->rescaled;
+    md->rescaled = 1.0;
+    for (int i = 0; i < sv->count; ++i) {
+        sv->w[i] = v3_scale(sv->w[i], f);
+        if (!sv->in->want_witness) continue;
+        sv->a[i] = v3_scale(sv->a[i], f);
+        sv->b[i] = v3_scale(sv->b[i], f);
+    }
+    sv->x = v3_scale(sv->x, f);
+    sv->x2 = v3_norm2(sv->x);
+    *d = v3_scale(*d, f);
+    sv->m.d_prev = v3_scale(sv->m.d_prev, f);
+    sv->m.s_prev = v3_scale(sv->m.s_prev, f);
+    if (!sv->in->relative) sv->abs_tolerance *= f * f;
 }
 
-/* After a support call that had to lower the scale (agjk__minkowski_shrink),
- * brings the solver's own state to the new units. Exact: powers of two. */
-static void follow_rescale(agjk__minkowski *md, agjk__vertex *simplex, int count, agjk_vec3 *x,
-                           agjk__momentum *m, agjk_vec3 *d) {
-    double f = md->rescaled;
-    if (f == 1.0) return;
-    md->rescaled = 1.0;
-    for (int i = 0; i < count; ++i) {
-        simplex[i].w = v3_scale(simplex[i].w, f);
-        simplex[i].a = v3_scale(simplex[i].a, f);
-        simplex[i].b = v3_scale(simplex[i].b, f);
+/* Alg. 2: the plane of normal d through s separates D (inflated by the margins)
+ * from the origin when <d, s> > ||d|| (margin + rounding): squared, with no
+ * square root, when d has a safe size (the support path keeps directions in
+ * [2^-60, 2^100], so this is the common case). */
+static int separates(const agjk__minkowski *md, agjk_vec3 d, agjk_vec3 w) {
+    double r = md->margin + md->noise;
+    double dm = v3_maxabs(d);
+    if (dm >= AGJK__DIRECTION_MIN && dm <= AGJK__DIRECTION_MAX) {
+        double dw = v3_dot(d, w);
+        return dw > 0.0 && dw * dw > v3_norm2(d) * r * r;
     }
-    *x = v3_scale(*x, f);
-    *d = v3_scale(*d, f);
-    m->d_prev = v3_scale(m->d_prev, f);
-    m->s_prev = v3_scale(m->s_prev, f);
+    /* The unit direction, as the support function saw it: a denormal d has
+     * too few significant bits for <d, w> to mean anything. */
+    return v3_dot(v3_normalize(d), w) > r;
 }
 
 /* Checks a fresh support s in direction d: a bad callback output ends the
  * query, and in Boolean mode so does a separating plane (Alg. 2). Returns 1
  * when the loop must stop, with out->outcome set. */
-static int support_ends_query(const agjk__minkowski *md, const agjk__solve_input *in, agjk_vec3 d,
-                              const agjk__vertex *s, agjk__solve_output *out) {
-    if (md->bad_support) {
+static int support_ends_query(const solver *sv, agjk_vec3 d, const agjk__vertex *s,
+                              agjk__solve_output *out) {
+    if (sv->md->bad_support) {
         out->outcome = AGJK__BAD_SUPPORT;
         return 1;
     }
-    if (in->boolean_mode && separates(md, d, s->w)) {
+    if (sv->in->boolean_mode && separates(sv->md, d, s->w)) {
         out->outcome = AGJK__SEPARATED_EARLY;
         out->direction = d;
         return 1;
@@ -91,50 +98,109 @@ static int support_ends_query(const agjk__minkowski *md, const agjk__solve_input
     return 0;
 }
 
+/* Whether a gap g at the current iterate meets the tolerance: AGJK__CONVERGED
+ * when it meets the requested one, AGJK__AT_FLOOR when it is down to what
+ * double precision resolves but above the request, else AGJK__ITERATION_CAP
+ * (not met).
+ *
+ * The floor: x and s carry rounding errors of about `noise` each, so the
+ * computed g = 2 <x, x - s> is uncertain by about 2 noise (||x|| + ||x - s||).
+ * While iterating, the loop stops only at the tight floor 2 ||x|| noise
+ * (xs2 = 0), where further steps cannot change anything; the wide floor, with
+ * xs2 = ||x - s||^2, which can be far above it for shapes in close proximity
+ * (||x|| << ||x - s||), judges a loop that stopped making progress. */
+static agjk__outcome gap_verdict(const solver *sv, double g, double xs2) {
+    const agjk__minkowski *md = sv->md;
+    double requested = sv->abs_tolerance;
+    if (sv->in->relative) {
+        /* Relative mode promises |d - d*| <= d* t/2 (t the tolerance) with the
+         * whole certified interval: the gap's part g / (2 ||x||) plus the
+         * rounding allowances (2 noise below, 2 noise above; see query.c). With
+         * b = g / (2 ||x||) and d = ||x|| - margins that holds when
+         * b + 4 noise <= t/2 (d - b - 2 noise). */
+        double x_norm = sqrt(sv->x2);
+        double half = 0.5 * sv->in->tolerance;
+        double b = (half * (x_norm - md->margin - 2.0 * md->noise) - 4.0 * md->noise) / (1.0 + half);
+        requested = b > 0.0 ? 2.0 * x_norm * b : 0.0;
+    }
+    if (g <= requested) return AGJK__CONVERGED;
+    /* g <= 2 noise (||x|| + ||x - s||), squared and bounded above by
+     * 8 noise^2 (||x||^2 + ||x - s||^2). */
+    double noise2 = md->noise * md->noise;
+    double floor2 = xs2 > 0.0 ? 8.0 * noise2 * (sv->x2 + xs2) : 4.0 * noise2 * sv->x2;
+    if (g <= 0.0 || g * g <= floor2) return AGJK__AT_FLOOR;
+    return AGJK__ITERATION_CAP;
+}
+
+/* Alg. 6 switches momentum off once g(x_k) <= eps. A relative tolerance
+ * shrinks with the distance and never fires on overlapping shapes, so
+ * momentum would creep on for ever: for this test use it as an absolute one
+ * at the problem's own scale. */
+static int momentum_stalls(const solver *sv, double g, int k) {
+    if (k >= MOMENTUM_BUDGET || gap_verdict(sv, g, 0.0) != AGJK__ITERATION_CAP) return 1;
+    if (!sv->in->relative) return 0;
+    double scaled = sv->in->tolerance * sv->md->magnitude * sv->md->magnitude;
+    return g <= scaled;
+}
+
 /* Adds s to the active set and projects the origin onto its hull, keeping only
  * the vertices with positive weight (Alg. 4 line 7 / Alg. 5). Returns 1 when
  * the origin is enclosed by a full tetrahedron. */
-static int update_simplex(agjk__vertex *simplex, int *count, double lambda[4],
-                          const agjk__vertex *s, agjk_vec3 *x) {
-    simplex[(*count)++] = *s;
-    agjk_vec3 w[4];
-    for (int i = 0; i < *count; ++i) w[i] = simplex[i].w;
+static int update_simplex(solver *sv, const agjk__vertex *s, agjk_vec3 *x) {
+    int n = sv->count;
+    sv->w[n] = s->w;
+    if (sv->in->want_witness) {
+        sv->a[n] = s->a;
+        sv->b[n] = s->b;
+    }
+    ++n;
     double l[4];
-    unsigned mask = agjk__simplex_project(w, *count, l, x);
+    unsigned mask = agjk__simplex_project(sv->w, n, l, x);
     if (mask == 0xFu) {
-        for (int i = 0; i < 4; ++i) lambda[i] = l[i];
+        for (int i = 0; i < 4; ++i) sv->lambda[i] = l[i];
+        sv->count = 4;
         return 1;
     }
     int kept = 0;
-    for (int i = 0; i < *count; ++i) {
-        if (mask & (1u << i)) {
-            simplex[kept] = simplex[i];
-            lambda[kept] = l[i];
-            ++kept;
+    for (int i = 0; i < n; ++i) {
+        if (!(mask & (1u << i))) continue;
+        if (kept != i) {
+            sv->w[kept] = sv->w[i];
+            if (sv->in->want_witness) {
+                sv->a[kept] = sv->a[i];
+                sv->b[kept] = sv->b[i];
+            }
         }
+        sv->lambda[kept] = l[i];
+        ++kept;
     }
-    *count = kept;
+    sv->count = kept;
     return 0;
 }
 
 /* Plain Frank-Wolfe with exact line search (Alg. 1): the active set is the
  * iterate itself, stored as one vertex whose a, b accumulate the convex
  * combination so that witness points stay available. */
-static void update_frank_wolfe(agjk__vertex *simplex, int *count, double lambda[4],
-                               const agjk__vertex *s, agjk_vec3 *x) {
-    if (*count == 0) {
-        simplex[0] = *s;
+static void update_frank_wolfe(solver *sv, const agjk__vertex *s, agjk_vec3 *x) {
+    if (sv->count == 0) {
+        sv->w[0] = s->w;
+        if (sv->in->want_witness) {
+            sv->a[0] = s->a;
+            sv->b[0] = s->b;
+        }
     } else {
-        agjk_vec3 w[2] = {simplex[0].w, s->w};
+        agjk_vec3 w[2] = {sv->w[0], s->w};
         double l[4];
         agjk__simplex_project(w, 2, l, x);
-        simplex[0].a = v3_lerp2(simplex[0].a, l[0], s->a, l[1]);
-        simplex[0].b = v3_lerp2(simplex[0].b, l[0], s->b, l[1]);
-        simplex[0].w = *x;
+        if (sv->in->want_witness) {
+            sv->a[0] = v3_lerp2(sv->a[0], l[0], s->a, l[1]);
+            sv->b[0] = v3_lerp2(sv->b[0], l[0], s->b, l[1]);
+        }
+        sv->w[0] = *x;
     }
-    *count = 1;
-    lambda[0] = 1.0;
-    *x = simplex[0].w;
+    sv->count = 1;
+    sv->lambda[0] = 1.0;
+    *x = sv->w[0];
 }
 
 static int parallel(agjk_vec3 d, agjk_vec3 x) {
@@ -142,17 +208,54 @@ static int parallel(agjk_vec3 d, agjk_vec3 x) {
     return v3_norm2(c) == 0.0 && v3_dot(d, x) > 0.0;
 }
 
+/* The first support, in direction x_0 for every method (d_{-1} = s_{-1} = x_0
+ * gives d_0 = x_0), also tells the problem's size: from then on the solver
+ * works in units where it is about 1 (agjk__minkowski_set_scale). */
+static void first_support(solver *sv, agjk__vertex *s, agjk__solve_output *out) {
+    agjk__minkowski *md = sv->md;
+    agjk_vec3 x = sv->in->x0;
+    /* The problem's size is not known yet: give the callbacks a unit-size
+     * direction (exact power-of-two scaling of x_0). */
+    agjk__minkowski_support(md, v3_scale_to_unit(x, v3_maxabs(x)), s, sv->in->want_witness);
+    ++out->support_calls;
+    /* A shrink during that first call already put s in new units; x_0, given
+     * in the caller's units, needs it too. */
+    double shrunk = md->rescaled;
+    md->rescaled = 1.0;
+    double f = agjk__minkowski_set_scale(md);
+    if (f != 1.0) {
+        s->w = v3_scale(s->w, f);
+        if (sv->in->want_witness) {
+            s->a = v3_scale(s->a, f);
+            s->b = v3_scale(s->b, f);
+        }
+    }
+    if (shrunk != 1.0 || f != 1.0) {
+        agjk_vec3 x_units = v3_scale(v3_scale(x, shrunk), f);
+        /* A guess far off the problem's size (a caller's, or a denormal offset
+         * that underflows when scaled) only gives a direction. */
+        if (!v3_in_range(x_units) || v3_maxabs(x_units) < 1.0 / AGJK_MAX_COORDINATE)
+            x_units = v3_normalize(x);
+        x = x_units;
+    }
+    sv->x = x;
+    sv->x2 = v3_norm2(x);
+    sv->m.d_prev = x;
+    sv->m.s_prev = x;
+    sv->abs_tolerance = sv->in->tolerance * md->scale * md->scale;
+}
+
 void agjk__solve(agjk__minkowski *md, const agjk__solve_input *in, agjk__solve_output *out) {
-    agjk__vertex simplex[4];
-    double lambda[4] = {1.0, 0.0, 0.0, 0.0};
-    int count = 0;
-    agjk_vec3 x = in->x0;
-    int have_x = 0; /* x is a point of D (after the first projection) */
-    agjk__momentum m;
-    m.method = in->method;
-    m.active = agjk__method_has_momentum(in->method);
-    m.d_prev = x;
-    m.s_prev = x;
+    solver sv;
+    sv.md = md;
+    sv.in = in;
+    sv.count = 0;
+    sv.lambda[0] = 1.0;
+    sv.lambda[1] = sv.lambda[2] = sv.lambda[3] = 0.0;
+    sv.m.method = in->method;
+    sv.m.active = agjk__method_has_momentum(in->method);
+    int have_x = 0;      /* x is a point of D (after the first projection) */
+    int stalled = 0;     /* consecutive iterations without progress */
 
     out->outcome = AGJK__ITERATION_CAP;
     out->gap = INFINITY;
@@ -162,150 +265,130 @@ void agjk__solve(agjk__minkowski *md, const agjk__solve_input *in, agjk__solve_o
     out->momentum_stop = -1;
     out->direction = v3(0.0, 0.0, 0.0);
 
-    /* The first support, in direction x_0 for every method (d_{-1} = s_{-1} =
-     * x_0 gives d_0 = x_0), also tells the problem's size: from then on the
-     * solver works in units where it is about 1. */
     agjk__vertex s;
-    {
-        /* The problem's size is not known yet: give the callbacks a unit-size
-         * direction (exact power-of-two scaling of x_0). */
-        double m0 = v3_maxabs(x);
-        agjk__minkowski_support(md, m0 > 0.0 ? v3_scale_to_unit(x, m0) : x, &s);
-    }
-    ++out->support_calls;
-    {
-        /* A shrink during that first call already put s in new units; x_0,
-         * given in the caller's units, needs it too. */
-        double shrunk = md->rescaled;
-        md->rescaled = 1.0;
-        double f = agjk__minkowski_set_scale(md);
-        s.a = v3_scale(s.a, f);
-        s.b = v3_scale(s.b, f);
-        s.w = v3_scale(s.w, f);
-        agjk_vec3 x_units = v3_scale(v3_scale(x, shrunk), f);
-        /* A guess far off the problem's size (a caller's, or a denormal offset
-         * that underflows when scaled) only gives a direction. */
-        if (!v3_in_range(x_units) || v3_maxabs(x_units) < 1.0 / AGJK_MAX_COORDINATE)
-            x_units = v3_normalize(x);
-        x = x_units;
-        m.d_prev = x;
-        m.s_prev = x;
-    }
+    first_support(&sv, &s, out);
     for (int k = 0; k < in->max_iterations; ++k) {
         out->iterations = k + 1;
-        agjk_vec3 d = x;
+        agjk_vec3 d = sv.x;
         if (k > 0) {
-            if (m.active) d = agjk__momentum_direction(&m, k, x);
-            agjk__minkowski_support(md, d, &s);
+            if (sv.m.active) d = agjk__momentum_direction(&sv.m, k, sv.x);
+            support(&sv, &d, &s);
             ++out->support_calls;
-            follow_rescale(md, simplex, count, &x, &m, &d);
         }
-        if (support_ends_query(md, in, d, &s, out)) break;
+        if (support_ends_query(&sv, d, &s, out)) break;
         if (have_x) {
-            double x2 = v3_norm2(x);
-            double requested = requested_tolerance(in, md, x2);
-            double floor = floor_tolerance(x2, noise_scale(md));
-            double tol = requested > floor ? requested : floor;
-            double g = 2.0 * v3_dot(x, v3_sub(x, s.w)); /* eq. 29 */
-            /* Alg. 6 switches momentum off once g(x_k) <= eps. A relative
-             * tolerance shrinks with the distance and never fires on
-             * overlapping shapes, so momentum would creep on for ever: for
-             * this test use it as an absolute one at the problem's own scale. */
-            double fallback = tol;
-            if (in->relative) {
-                double scaled = in->tolerance * md->magnitude * md->magnitude;
-                if (scaled > fallback) fallback = scaled;
-            }
-            if (m.active && (g <= fallback || k >= MOMENTUM_BUDGET)) {
+            double g = 2.0 * v3_dot(sv.x, v3_sub(sv.x, s.w)); /* eq. 29 */
+            if (sv.m.active && momentum_stalls(&sv, g, k)) {
                 /* Alg. 6 lines 5-7: the momentum direction makes no progress. */
-                if (parallel(d, x)) {
+                if (parallel(d, sv.x)) {
                     out->gap = g;
                     out->gap_valid = 1;
-                    out->outcome = g <= requested ? AGJK__CONVERGED : AGJK__AT_FLOOR;
+                    agjk__outcome v = gap_verdict(&sv, g, 0.0);
+                    out->outcome = v == AGJK__CONVERGED ? v : AGJK__AT_FLOOR;
                     break;
                 }
-                m.active = 0;
+                sv.m.active = 0;
                 out->momentum_stop = k;
-                d = x;
-                agjk__minkowski_support(md, d, &s);
+                d = sv.x;
+                support(&sv, &d, &s);
                 ++out->support_calls;
-                follow_rescale(md, simplex, count, &x, &m, &d);
-                if (support_ends_query(md, in, d, &s, out)) break;
-                /* The support may have changed the units: recompute in them. */
-                x2 = v3_norm2(x);
-                requested = requested_tolerance(in, md, x2);
-                floor = floor_tolerance(x2, noise_scale(md));
-                tol = requested > floor ? requested : floor;
-                g = 2.0 * v3_dot(x, v3_sub(x, s.w));
+                if (support_ends_query(&sv, d, &s, out)) break;
+                g = 2.0 * v3_dot(sv.x, v3_sub(sv.x, s.w));
             }
-            if (!m.active) {
+            if (!sv.m.active) {
                 /* x is in D and s minimises <x, .> over D, so g >= 0 up to
-                 * rounding. Clearly negative: the support function lies. */
-                if (g < -4.0 * sqrt(x2) * noise_scale(md)) {
+                 * rounding. Clearly negative (below -4 ||x|| noise): the support
+                 * function lies. */
+                if (g < 0.0 && g * g > 16.0 * sv.x2 * md->noise * md->noise) {
                     out->outcome = AGJK__BAD_SUPPORT;
                     break;
                 }
                 out->gap = g; /* a true Frank-Wolfe gap: s = S_D(x) */
                 out->gap_valid = 1;
-                if (g <= requested) { out->outcome = AGJK__CONVERGED; break; }
-                if (g <= tol) { out->outcome = AGJK__AT_FLOOR; break; }
+                agjk__outcome v = gap_verdict(&sv, g, 0.0);
+                if (v != AGJK__ITERATION_CAP) {
+                    out->outcome = v;
+                    break;
+                }
             }
         }
         agjk_vec3 x_new;
         int enclosed;
         if (in->method == AGJK_METHOD_FRANK_WOLFE) {
-            update_frank_wolfe(simplex, &count, lambda, &s, &x_new);
+            update_frank_wolfe(&sv, &s, &x_new);
             enclosed = v3_norm2(x_new) == 0.0;
         } else {
-            enclosed = update_simplex(simplex, &count, lambda, &s, &x_new);
+            enclosed = update_simplex(&sv, &s, &x_new);
         }
         double x_new2 = v3_norm2(x_new);
-        int no_progress = have_x && !enclosed && x_new2 >= v3_norm2(x);
-        x = x_new;
+        int no_progress = have_x && !enclosed && x_new2 >= sv.x2;
+        sv.x = x_new;
+        sv.x2 = x_new2;
         have_x = 1;
         out->gap_valid = 0;
+        double margin = md->margin, noise = md->noise;
+        /* Enclosed, or the core distance ||x|| below the margins (rounding
+         * included): sqrt(x2) + noise < margin, squared. */
         if (enclosed || x_new2 == 0.0 ||
-            sqrt(x_new2) + noise_scale(md) < md->margin) {
+            (margin > noise && x_new2 < (margin - noise) * (margin - noise))) {
             out->outcome = AGJK__INTERSECTING;
             break;
         }
-        /* x is zero to rounding: the cores touch or overlap within what double
-         * precision can tell (plain FW creeps towards such an x forever). */
-        if (sqrt(x_new2) <= noise_scale(md)) { out->outcome = AGJK__AT_ROUNDING; break; }
-        if (no_progress) {
-            /* Plain directions must decrease ||x||; if rounding stops that,
-             * further iterations would only cycle. With momentum, no progress
-             * is the fixed point of eq. 28 (s_k adds nothing to the simplex):
-             * switch to GJK directions, even if g has not met the tolerance
-             * (a relative tolerance on overlapping shapes never does). */
-            if (!m.active) { out->outcome = AGJK__STALLED; break; }
-            m.active = 0;
-            out->momentum_stop = k;
+        /* x is zero to rounding (||x|| <= noise): the cores touch or overlap
+         * within what double precision can tell (plain FW creeps towards such
+         * an x forever). */
+        if (x_new2 <= noise * noise) {
+            out->outcome = AGJK__AT_ROUNDING;
+            break;
         }
-        m.d_prev = d;
-        m.s_prev = s.w;
+        if (no_progress) {
+            /* With momentum, no progress is the fixed point of eq. 28 (s_k adds
+             * nothing to the simplex): switch to GJK directions, even if g has
+             * not met the tolerance (a relative tolerance on overlapping shapes
+             * never does). Plain directions must decrease ||x||, but near the
+             * optimum the decrease can be below the rounding of ||x||^2 while
+             * the gap at the new x already meets the tolerance: so stop only
+             * after two such iterations in a row (the next gap test decides). */
+            if (sv.m.active) {
+                sv.m.active = 0;
+                out->momentum_stop = k;
+            } else if (++stalled >= 2) {
+                out->outcome = AGJK__STALLED;
+                break;
+            }
+        } else {
+            stalled = 0;
+        }
+        sv.m.d_prev = d;
+        sv.m.s_prev = s.w;
     }
 
     /* Without a valid gap at the final iterate (cap, stall, or momentum still
-     * on), one support in direction x certifies what was reached. */
+     * on), one support in direction x certifies what was reached; a gap that
+     * meets the tolerance, or the wide floor, then counts, whatever path the
+     * loop took. */
     if ((out->outcome == AGJK__ITERATION_CAP || out->outcome == AGJK__STALLED ||
          out->outcome == AGJK__AT_ROUNDING) && have_x && !out->gap_valid) {
-        agjk_vec3 d = x;
-        agjk__minkowski_support(md, x, &s);
+        agjk_vec3 d = sv.x;
+        support(&sv, &d, &s);
         ++out->support_calls;
-        follow_rescale(md, simplex, count, &x, &m, &d);
-        if (!support_ends_query(md, in, x, &s, out)) {
-            out->gap = 2.0 * v3_dot(x, v3_sub(x, s.w));
+        if (!support_ends_query(&sv, d, &s, out)) {
+            agjk_vec3 xs = v3_sub(sv.x, s.w);
+            out->gap = 2.0 * v3_dot(sv.x, xs);
             out->gap_valid = 1;
+            if (out->outcome != AGJK__AT_ROUNDING) {
+                agjk__outcome v = gap_verdict(&sv, out->gap, v3_norm2(xs));
+                if (v != AGJK__ITERATION_CAP) out->outcome = v;
+            }
         }
     }
 
-    out->x = x;
-    out->noise = noise_scale(md);
+    out->x = sv.x;
+    out->noise = md->noise;
     agjk_vec3 a = v3(0.0, 0.0, 0.0), b = v3(0.0, 0.0, 0.0);
-    for (int i = 0; in->want_witness && i < count; ++i) {
-        a = v3_add(a, v3_scale(simplex[i].a, lambda[i]));
-        b = v3_add(b, v3_scale(simplex[i].b, lambda[i]));
+    for (int i = 0; in->want_witness && i < sv.count; ++i) {
+        a = v3_add(a, v3_scale(sv.a[i], sv.lambda[i]));
+        b = v3_add(b, v3_scale(sv.b[i], sv.lambda[i]));
     }
     out->a = a;
     out->b = b;

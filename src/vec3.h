@@ -5,6 +5,8 @@
 
 #include <float.h>
 #include <math.h>
+#include <stdint.h>
+#include <string.h>
 
 #include "agjk/types.h"
 
@@ -37,18 +39,35 @@ static inline int v3_in_range(agjk_vec3 a) {
     return fabs(a.x) <= AGJK_MAX_COORDINATE && fabs(a.y) <= AGJK_MAX_COORDINATE &&
            fabs(a.z) <= AGJK_MAX_COORDINATE;
 }
+/* |a_x| + |a_y| + |a_z|: NaN and Inf propagate (v3_maxabs may drop a NaN). */
+static inline double v3_norm1(agjk_vec3 a) { return fabs(a.x) + fabs(a.y) + fabs(a.z); }
 static inline double v3_maxabs(agjk_vec3 a) {
     double m = fabs(a.x);
     if (fabs(a.y) > m) m = fabs(a.y);
     if (fabs(a.z) > m) m = fabs(a.z);
     return m;
 }
-/* Unit vector along a, or the zero vector when a is zero. Scales first so that
- * tiny or huge vectors neither underflow nor overflow in the squared norm. */
+/* 2^-e for 2^e <= m < 2^(e+1), m > 0 finite, or 0 when that power is not a
+ * normal double (m denormal, or m >= 2^1023): by exponent arithmetic, since
+ * ilogb and ldexp are library calls. */
+static inline double pow2_inverse_floor(double m) {
+    uint64_t bits;
+    memcpy(&bits, &m, sizeof bits);
+    int biased = (int)((bits >> 52) & 0x7ff); /* exponent e + 1023 */
+    int target = 2046 - biased;                /* -e + 1023 */
+    if (biased == 0 || target <= 0 || target >= 0x7ff) return 0.0;
+    bits = (uint64_t)target << 52;
+    double f;
+    memcpy(&f, &bits, sizeof f);
+    return f;
+}
+
 /* a * 2^-ilogb(m) for m = max |a_i| > 0: max |a_i| lands in [1, 2), exactly
  * (a power of two), in two steps when 2^-ilogb(m) alone would overflow
  * (m denormal). */
 static inline agjk_vec3 v3_scale_to_unit(agjk_vec3 a, double m) {
+    double f = pow2_inverse_floor(m);
+    if (f > 0.0) return v3_scale(a, f);
     int e = -ilogb(m);
     if (e > 1000) {
         a = v3_scale(a, ldexp(1.0, 1000));
@@ -62,7 +81,12 @@ static inline agjk_vec3 v3_div(agjk_vec3 a, double m) {
     if (m >= 1e-300) return v3_scale(a, 1.0 / m); /* 1/m finite: multiply */
     return v3(a.x / m, a.y / m, a.z / m);
 }
+/* Unit vector along a, or the zero vector when a is zero. Tiny or huge vectors
+ * are scaled first so that the squared norm neither underflows nor overflows;
+ * in between, one square root and one division. */
 static inline agjk_vec3 v3_normalize(agjk_vec3 a) {
+    double n2 = v3_norm2(a);
+    if (n2 >= 0x1p-900 && n2 <= 0x1p900) return v3_scale(a, 1.0 / sqrt(n2));
     double m = v3_maxabs(a);
     if (!(m > 0.0)) return v3(0.0, 0.0, 0.0);
     a = v3_div(a, m);

@@ -110,6 +110,23 @@ typedef enum agjk_tolerance_mode {
     AGJK_TOLERANCE_RELATIVE = 1
 } agjk_tolerance_mode;
 
+/** Why a query ended without a verdict (agjk_result::stop_reason). Values are
+ *  fixed forever; new ones are appended. */
+typedef enum agjk_stop_reason {
+    /** The query converged or gave a verdict (status other than NOT_CONVERGED). */
+    AGJK_STOP_NONE = 0,
+    /** agjk_options::max_iterations iterations ran before the tolerance was met. */
+    AGJK_STOP_ITERATION_CAP = 1,
+    /** Floating point cannot decrease ||x|| any further: at the iteration
+     *  reported in agjk_result::iterations no step made progress and the gap is
+     *  still above the tolerance (and, in absolute mode, above the rounding floor). */
+    AGJK_STOP_NO_PROGRESS = 2,
+    /** Relative mode: the certified interval, rounding included, is wider than
+     *  the relative accuracy asked; double precision cannot certify it for a
+     *  distance this small compared with the shapes' size. */
+    AGJK_STOP_BELOW_PRECISION = 3
+} agjk_stop_reason;
+
 /** What the distance query computes beyond the distance. Bit flags. */
 typedef enum agjk_compute_flags {
     /** Only distance, bound, normal and counters. */
@@ -204,6 +221,10 @@ typedef struct agjk_result {
     int32_t momentum_stop_iteration;
     /** Final support hints of A and B: pass them back in agjk_options to warm-start. */
     int32_t hint_a, hint_b;
+    /** Why the query ended AGJK_STATUS_NOT_CONVERGED (an agjk_stop_reason);
+     *  AGJK_STOP_NONE with every other status. (Occupies what was padding in
+     *  0.1.0, which that version wrote as zero.) */
+    int32_t stop_reason;
     /** Reserved for fields appended in later versions; written as zero. */
     double reserved[8];
 } agjk_result;

@@ -219,14 +219,14 @@ print("OFF\n%d 0 0" % len(pts)); [print(*p) for p in pts]' >"$tmp/dups.off"
 run "duplicates" 0 info "$tmp/dups.off" --json 2>/dev/null && check_json "duplicates" "r['hull_vertices'] == 8"
 # Double precision: coordinates that float cannot hold survive (OFF and OBJ).
 printf 'OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n0 0 0.10000000000000001\n3 0 1 2\n3 0 1 3\n' >"$tmp/thin.off"
-distance_is "double precision coordinates" "3 - 0.10000000000000001 - 0.5" 1e-15 "$tmp/thin.off" "$C" --pose-b 0 0 3 1 0 0 0
+distance_is "double precision coordinates" "3 - 0.10000000000000001 - 0.5" 1e-13 "$tmp/thin.off" "$C" --pose-b 0 0 3 1 0 0 0
 printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1.0000001192092896\nv 0 0 1.00000001\nf 1 2 3\nf 1 2 5\n' >"$tmp/near.obj"
-distance_is "double precision OBJ" "3 - 1.00000001 - 0.5" 1e-15 "$tmp/near.obj" "$C" --pose-b 0 0 3 1 0 0 0
+distance_is "double precision OBJ" "3 - 1.00000001 - 0.5" 1e-13 "$tmp/near.obj" "$C" --pose-b 0 0 3 1 0 0 0
 printf 'ply\nformat ascii 1.0\ncomment c\nelement vertex 4\nproperty double x\nproperty double y\nproperty double z\nproperty uchar red\nelement face 2\nproperty list uchar int vertex_indices\nend_header\n0 0 0 1\n1 0 0 2\n0 1 0 3\n0 0 0.10000000000000001 4\n3 0 1 2\n3 0 1 3\n' >"$tmp/double.ply"
-distance_is "double precision PLY" "2.4" 1e-15 "$tmp/double.ply" "$C" --pose-b 0 0 3 1 0 0 0
+distance_is "double precision PLY" "2.4" 1e-13 "$tmp/double.ply" "$C" --pose-b 0 0 3 1 0 0 0
 sed 's/property double/property float/' "$tmp/double.ply" >"$tmp/float.ply"
 # A PLY coordinate declared float is the float nearest 0.1 (python's struct rounds the same way).
-distance_is "float PLY stays float" "2.5 - __import__('struct').unpack('f', __import__('struct').pack('f', 0.1))[0]" 1e-15 "$tmp/float.ply" "$C" --pose-b 0 0 3 1 0 0 0
+distance_is "float PLY stays float" "2.5 - __import__('struct').unpack('f', __import__('struct').pack('f', 0.1))[0]" 1e-13 "$tmp/float.ply" "$C" --pose-b 0 0 3 1 0 0 0
 
 # Other formats through assimp: PLY, binary STL, and glTF with a node
 # transform (translation 10, scale 2) that must be applied.
@@ -266,7 +266,7 @@ distance_is "UTF-8 BOM + CRLF OBJ" 1.5 1e-12 "$tmp/bom.obj" "$C" --pose-b 0 0 3 
 printf '\357\273\277OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 1 2\n3 0 1 3\n' >"$tmp/bom.off"
 distance_is "UTF-8 BOM OFF" 1.5 1e-12 "$tmp/bom.off" "$C" --pose-b 0 0 3 1 0 0 0
 printf 'v 0 0 0\rv 1 0 0\rv 0 1 0\rv 0 0 0.1\rf 1 2 3\rf 1 2 4\r' >"$tmp/cr.obj"
-distance_is "CR-only line ends, double precision" 2.4 1e-15 "$tmp/cr.obj" "$C" --pose-b 0 0 3 1 0 0 0
+distance_is "CR-only line ends, double precision" 2.4 1e-13 "$tmp/cr.obj" "$C" --pose-b 0 0 3 1 0 0 0
 printf '# caf\351 \377 comment\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 2 3\nf 1 2 4\n' >"$tmp/latin1.obj"
 distance_is "Latin-1 comment" 1.5 1e-12 "$tmp/latin1.obj" "$C" --pose-b 0 0 3 1 0 0 0
 run "degenerate hull written" 0 hull "$MESHES/square.off" -o "$tmp/sqhull.off" && ok

@@ -26,6 +26,12 @@
  * iterations (measured on the pybullet random_urdfs meshes: at gaps near
  * 1e-5 x size, 1e-8 left 30% relative error, this leaves 1e-10 or less). */
 #define CLI_DEFAULT_TOLERANCE 1e-300
+/* With --relative and no --tolerance: a relative error of 5e-13. A relative
+ * tolerance is never raised to a floor (the library answers "not converged"
+ * when double precision cannot certify it), so "most accurate" has no
+ * relative counterpart; this is well above the rounding of shapes that are
+ * not nearly touching. */
+#define CLI_DEFAULT_RELATIVE_TOLERANCE 1e-12
 
 void cli_error(const char *fmt, ...) {
     va_list ap;
@@ -131,7 +137,7 @@ void cli_args_init(cli_args *args) {
     pose_identity(&args->pose[1]);
     args->scale[0] = args->scale[1] = 1.0;
     agjk_options_init(&args->query);
-    args->query.tolerance = CLI_DEFAULT_TOLERANCE;
+    args->query.tolerance = 0.0; /* not given: set by cli_parse from the mode */
     args->timeout = 300.0;
     args->memory_limit_mb = -1.0;
 }
@@ -248,6 +254,10 @@ int cli_parse(int argc, char **argv, int first, int accepted, int max_inputs, cl
             args->inputs[args->input_count++] = s;
         }
     }
+    if (args->query.tolerance == 0.0)
+        args->query.tolerance = args->query.tolerance_mode == AGJK_TOLERANCE_RELATIVE
+                                    ? CLI_DEFAULT_RELATIVE_TOLERANCE
+                                    : CLI_DEFAULT_TOLERANCE;
     if (args->input_count < max_inputs) {
         cli_error("%s needs %d mesh file%s; see agjk %s --help", argv[0], max_inputs,
                   max_inputs > 1 ? "s" : "", argv[0]);

@@ -103,10 +103,20 @@ static int run_query(int argc, char **argv, const char *query) {
     }
     if (a.json) print_json(stdout, query, &a, &r);
     else print_text(stdout, query, &r);
-    if (st == AGJK_STATUS_NOT_CONVERGED)
-        cli_error("not converged: the gap %.3g did not reach the tolerance within %d iterations; "
-                  "the answer above is the best iterate, within its bound", r.gap,
-                  (int)a.query.max_iterations);
+    if (st == AGJK_STATUS_NOT_CONVERGED) {
+        if (r.stop_reason == AGJK_STOP_ITERATION_CAP)
+            cli_error("not converged: the gap %.3g did not reach the tolerance within %d "
+                      "iterations (the cap); the answer above is certified within its bound",
+                      r.gap, (int)r.iterations);
+        else if (r.stop_reason == AGJK_STOP_NO_PROGRESS)
+            cli_error("not converged: no progress possible in double precision at iteration %d "
+                      "(gap %.3g above the tolerance); the answer above is certified within "
+                      "its bound", (int)r.iterations, r.gap);
+        else
+            cli_error("not converged: double precision cannot certify a relative error of %.3g "
+                      "at this distance (certified interval: bound %.3g); the answer above is "
+                      "certified within its bound", 0.5 * a.query.tolerance, r.bound);
+    }
     if (fflush(stdout) != 0 || ferror(stdout)) {
         cli_error("cannot write the result to standard output");
         return CLI_EXIT_ERROR;
