@@ -51,12 +51,14 @@ void agjk__minkowski_init(agjk__minkowski *md, const agjk_shape *a, const agjk_p
     md->bad_support = 0;
     md->scale = 1.0;
     md->rescaled = 1.0;
-    /* R = R_A^T R_B */
-    for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j)
-            md->rotation[i][j] = pose_a->rotation[0][i] * pose_b->rotation[0][j] +
-                                 pose_a->rotation[1][i] * pose_b->rotation[1][j] +
-                                 pose_a->rotation[2][i] * pose_b->rotation[2][j];
+    /* R = R_A^T R_B, column by column: R e_j = R_A^T (R_B e_j). */
+    const double *ra = &pose_a->rotation[0][0], *rb = &pose_b->rotation[0][0];
+    for (int j = 0; j < 3; ++j) {
+        agjk_vec3 c = m3_tmul(ra, v3(rb[j], rb[3 + j], rb[6 + j]));
+        md->rotation[0][j] = c.x;
+        md->rotation[1][j] = c.y;
+        md->rotation[2][j] = c.z;
+    }
     md->translation = m3_tmul(&pose_a->rotation[0][0], v3_sub(pose_b->translation, pose_a->translation));
     md->translation_size = v3_maxabs(md->translation);
     agjk__minkowski_grow(md, 0.0);

@@ -7,17 +7,24 @@ static void ellipsoid_support(const void *data, const agjk_vec3 *direction, agjk
                               int *hint) {
     const agjk_ellipsoid *e = (const agjk_ellipsoid *)data;
     (void)hint;
-    /* Rescale d first: the result does not depend on |d|, and this keeps
-     * ||D d|| away from underflow/overflow for tiny or huge directions. */
-    agjk_vec3 d = *direction;
-    double m = v3_maxabs(d);
-    d = v3_div(d, m);
-    agjk_vec3 dd = v3(e->radii.x * d.x, e->radii.y * d.y, e->radii.z * d.z);
-    /* Same trick on D d, whose entries may span many orders for stiff radii. */
-    double mdd = v3_maxabs(dd);
-    agjk_vec3 ddn = v3_div(dd, mdd);
+    agjk_vec3 r = e->radii, d = *direction;
+    agjk_vec3 dd = v3(r.x * d.x, r.y * d.y, r.z * d.z);
+    double n2 = v3_norm2(dd);
+    /* The common case: ||D d||^2 far from underflow and overflow, so one
+     * square root and one division. (Power-of-two scalings of d or of the
+     * radii scale every step exactly: answers stay bit-equivariant.) */
+    if (n2 >= 0x1p-900 && n2 <= 0x1p900) {
+        double inv = 1.0 / sqrt(n2);
+        *out = v3(r.x * dd.x * inv, r.y * dd.y * inv, r.z * dd.z * inv);
+        return;
+    }
+    /* Tiny or huge directions, or stiff radii spanning many orders: rescale d,
+     * then D d, before taking norms (the result does not depend on |d|). */
+    d = v3_div(d, v3_maxabs(d));
+    dd = v3(r.x * d.x, r.y * d.y, r.z * d.z);
+    agjk_vec3 ddn = v3_div(dd, v3_maxabs(dd));
     double norm = v3_norm(ddn);
-    *out = v3(e->radii.x * ddn.x / norm, e->radii.y * ddn.y / norm, e->radii.z * ddn.z / norm);
+    *out = v3(r.x * ddn.x / norm, r.y * ddn.y / norm, r.z * ddn.z / norm);
 }
 
 agjk_status agjk_shape_ellipsoid(agjk_shape *shape, const agjk_ellipsoid *ellipsoid) {

@@ -42,13 +42,11 @@ typedef struct solver {
     double abs_tolerance; /* absolute mode: the tolerance in solver units squared */
 } solver;
 
-/* One Minkowski support in direction d, and the rare follow-up when it had to
- * lower the scale (agjk__minkowski_rescue_points): the solver's own state goes
- * to the new units too. Exact: powers of two. */
-static void support(solver *sv, agjk_vec3 *d, agjk__vertex *s) {
+/* After a support that had to lower the scale (agjk__minkowski_rescue_points),
+ * brings the solver's own state to the new units. Exact: powers of two. Rare,
+ * so out of line. */
+static void follow_rescale(solver *sv, agjk_vec3 *d) {
     agjk__minkowski *md = sv->md;
-    agjk__minkowski_support(md, *d, s, sv->in->want_witness);
-    if (md->rescaled == 1.0) return;
     double f = md->rescaled;
     md->rescaled = 1.0;
     for (int i = 0; i < sv->count; ++i) {
@@ -63,6 +61,12 @@ static void support(solver *sv, agjk_vec3 *d, agjk__vertex *s) {
     sv->m.d_prev = v3_scale(sv->m.d_prev, f);
     sv->m.s_prev = v3_scale(sv->m.s_prev, f);
     if (!sv->in->relative) sv->abs_tolerance *= f * f;
+}
+
+/* One Minkowski support in direction d (s in the current units). */
+static inline void support(solver *sv, agjk_vec3 *d, agjk__vertex *s) {
+    agjk__minkowski_support(sv->md, *d, s, sv->in->want_witness);
+    if (sv->md->rescaled != 1.0) follow_rescale(sv, d);
 }
 
 /* Alg. 2: the plane of normal d through s separates D (inflated by the margins)
@@ -109,7 +113,7 @@ static int support_ends_query(const solver *sv, agjk_vec3 d, const agjk__vertex 
  * (xs2 = 0), where further steps cannot change anything; the wide floor, with
  * xs2 = ||x - s||^2, which can be far above it for shapes in close proximity
  * (||x|| << ||x - s||), judges a loop that stopped making progress. */
-static agjk__outcome gap_verdict(const solver *sv, double g, double xs2) {
+static inline agjk__outcome gap_verdict(const solver *sv, double g, double xs2) {
     const agjk__minkowski *md = sv->md;
     double requested = sv->abs_tolerance;
     if (sv->in->relative) {
