@@ -59,9 +59,11 @@ typedef enum agjk_status {
      *  certified: the true distance lies in [0, distance] with distance <= bound.
      *  The shapes touch to within the tolerance. */
     AGJK_STATUS_CONTACT_WITHIN_TOLERANCE = 2,
-    /** The iteration cap was hit, or floating point stopped making progress
-     *  before the tolerance was reached. The result still holds the best iterate
-     *  and a valid certified bound; no verdict is given. */
+    /** The iteration cap was hit, floating point stopped making progress
+     *  before the tolerance (or, in absolute mode, the floating-point floor) was
+     *  reached, or a relative accuracy beyond what double precision certifies was
+     *  asked; agjk_result::stop_reason says which. The result still holds the
+     *  best iterate and a valid certified bound; no verdict is given. */
     AGJK_STATUS_NOT_CONVERGED = 3,
     /** An argument was invalid (NULL pointer, NaN/Inf, negative size, bad
      *  rotation, tolerance <= 0, max_iterations < 1, unknown enum, a coordinate
@@ -194,13 +196,15 @@ typedef struct agjk_options {
  *  (zero where not computed), so a result never holds NaN or stale data. */
 typedef struct agjk_result {
     agjk_status status;
-    /** Upper estimate of the distance between the shapes (margins included), >= 0;
-     *  0 when intersecting. agjk_collide leaves it 0. */
+    /** Certified upper bound on the distance between the shapes (margins
+     *  included), >= 0: the length of a vector of D = A - B, plus an allowance
+     *  for the rounding of that vector (a few ulps of the problem's size). 0 when
+     *  intersecting. agjk_collide leaves it 0. */
     double distance;
-    /** Certified bound: the true distance lies in [max(0, distance - bound), distance].
-     *  Derived from the final gap: bound <= min(sqrt(gap), gap / (2 ||x||)) plus a
-     *  rounding allowance of a few ulps of the problem's size. agjk_collide
-     *  leaves it 0. */
+    /** Certified width: the true distance lies in [max(0, distance - bound),
+     *  distance], rounding included at both ends. Derived from the final gap:
+     *  bound <= min(sqrt(gap), gap / (2 ||x||)) plus the rounding allowances
+     *  (a few ulps of the problem's size at each end). agjk_collide leaves it 0. */
     double bound;
     /** Final Frank-Wolfe duality gap g = 2 <x, x - s> in length units squared. */
     double gap;
