@@ -30,7 +30,8 @@ $(BENCH_COAL_ADAPTER): tools/bench/coal_adapter.cpp tools/bench/coal_adapter.h $
 # By path, not -L: the fetched folder also holds an assimp 6 and Qhull that
 # must not replace the system ones the mesh tools link (Qhull is loaded once:
 # both are 8.0.2, the same soname).
-BENCH_EXTRA_LIBS += $(BENCH_COAL_LIBDIR)/libcoal.so -Wl,-rpath,$(BENCH_COAL_LIBDIR)
+BENCH_COAL_LIBS := $(BENCH_COAL_LIBDIR)/libcoal.so -Wl,-rpath,$(BENCH_COAL_LIBDIR)
+BENCH_EXTRA_LIBS += $(BENCH_COAL_LIBS)
 BENCH_LD := $(CXX)
 else
 BENCH_COAL_ADAPTER := $(OUT)/tools/bench/coal_stub.o
@@ -38,3 +39,17 @@ endif
 BENCH_EXTRA_OBJS += $(OUT)/tools/bench/coal_bench.o $(BENCH_COAL_ADAPTER)
 
 $(BENCH_BIN): $(OUT)/tools/bench/coal_bench.o $(BENCH_COAL_ADAPTER) $(BENCH_COAL_STAMP)
+
+# Instruction counts, agjk and Coal on identical problems (valgrind callgrind):
+#   make bench-callgrind        see tools/bench/callgrind.sh
+BENCH_CG_BIN := $(OUT)/tools/bench/agjk-callgrind-work
+$(BENCH_CG_BIN): $(OUT)/tools/bench/callgrind_work.o $(BENCH_COAL_ADAPTER) $(BENCH_LIB) \
+                 $(OUT)/tests/common/libtestcommon.a $(LIB_A) $(BENCH_COAL_STAMP)
+	$(or $(BENCH_LD),$(CC)) $(ALL_CFLAGS) -o $@ $(OUT)/tools/bench/callgrind_work.o \
+	    $(BENCH_COAL_ADAPTER) $(BENCH_LIB) $(OUT)/tests/common/libtestcommon.a $(LIB_A) \
+	    $(BENCH_COAL_LIBS) -lm
+TOOL_BINS += $(BENCH_CG_BIN)
+
+.PHONY: bench-callgrind
+bench-callgrind: $(BENCH_CG_BIN)
+	sh tools/bench/callgrind.sh $(BENCH_CG_BIN)

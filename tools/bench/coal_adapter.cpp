@@ -85,66 +85,113 @@ extern "C" void coal_adapter_shape_free(void *shape) {
     delete static_cast<coal::ShapeBase *>(shape);
 }
 
-extern "C" int coal_adapter_run(const void *shape_a, const void *shape_b,
-                                const coal_query_desc *q, coal_answer *out) {
-    const coal::ShapeBase *a = static_cast<const coal::ShapeBase *>(shape_a);
-    const coal::ShapeBase *b = static_cast<const coal::ShapeBase *>(shape_b);
-    if (!a || !b || q->max_iterations < 1 || !(q->tolerance > 0)) return -1;
-    try {
-        const Transform3s tf_a = make_transform(q->rotation_a, q->translation_a);
-        const Transform3s tf_b = make_transform(q->rotation_b, q->translation_b);
-        GJK gjk((size_t)q->max_iterations, q->tolerance);
-        gjk.gjk_variant = q->method == COAL_GJK       ? coal::DefaultGJK
-                          : q->method == COAL_POLYAK  ? coal::PolyakAcceleration
-                                                      : coal::NesterovAcceleration;
+namespace {
+
+// One query: what stays the same between runs is built once, outside the
+// timed region (as agjk's options are).
+struct Query {
+    const coal::ShapeBase *a, *b;
+    Transform3s tf_a, tf_b;
+    GJK gjk;
+    MinkowskiDiff md;
+    bool normalize;
+
+    Query(const coal::ShapeBase *a_, const coal::ShapeBase *b_, const coal_query_desc *q)
+        : a(a_), b(b_), tf_a(make_transform(q->rotation_a, q->translation_a)),
+          tf_b(make_transform(q->rotation_b, q->translation_b)),
+          gjk((size_t)q->max_iterations, q->tolerance),
+          normalize(q->method == COAL_NESTEROV_NORMALIZED) {
+        gjk.gjk_variant = q->method == COAL_GJK      ? coal::DefaultGJK
+                          : q->method == COAL_POLYAK ? coal::PolyakAcceleration
+                                                     : coal::NesterovAcceleration;
         gjk.convergence_criterion = coal::DualityGap;
         gjk.convergence_criterion_type = coal::Absolute;
         gjk.setDistanceEarlyBreak(q->boolean ? 0.0 : std::numeric_limits<double>::max());
-        const bool normalize = q->method == COAL_NESTEROV_NORMALIZED;
-        const int reps = q->reps > 0 ? q->reps : 1;
-        std::vector<double> times((size_t)reps);
-        MinkowskiDiff md;
-        GJK::Status status = GJK::DidNotRun;
-        for (int r = 0; r < reps; ++r) {
-            const double t0 = q->now_ns();
-            md.set(a, b, tf_a, tf_b);
-            md.normalize_support_direction = normalize;
-            // x0 = c_A - c_B in A's frame: B's origin sits at ot1.
-            const Vec3s guess = -md.ot1;
-            status = gjk.evaluate(md, guess);
-            times[(size_t)r] = q->now_ns() - t0;
-            sink = gjk.distance;
-        }
-        out->coal_status = (int)status;
-        out->iterations = (int)gjk.getNumIterations();
-        switch (status) {
-        case GJK::NoCollision:
-        case GJK::NoCollisionEarlyStopped:
-            out->verdict = 0;
-            out->distance = gjk.distance;
-            break;
-        case GJK::Collision:
-        case GJK::CollisionWithPenetrationInformation:
-            out->verdict = 1;
-            out->distance = 0.0;
-            break;
-        default:
-            out->verdict = -1;
-            out->distance = gjk.distance;
-            break;
-        }
-        out->time_ns = q->reps > 0 ? q->trimmed_mean(times.data(), reps) : 0.0;
+    }
 
+    // The timed region: the poses into A's frame and the support function
+    // (MinkowskiDiff::set), x0 = c_A - c_B (B's origin sits at ot1 in A's
+    // frame), GJK::evaluate.
+    GJK::Status run() {
+        md.set(a, b, tf_a, tf_b);
+        md.normalize_support_direction = normalize;
+        const Vec3s guess = -md.ot1;
+        return gjk.evaluate(md, guess);
+    }
+
+    // The same, counting the support calls.
+    long count_support_calls() {
         md.set(a, b, tf_a, tf_b);
         md.normalize_support_direction = normalize;
         counted_inner = md.getSupportFunc;
         counted_calls = 0;
         md.getSupportFunc = counting_support;
         gjk.evaluate(md, -md.ot1);
-        out->support_calls = (int)counted_calls;
+        return counted_calls;
+    }
+};
+
+int verdict_of(GJK::Status status) {
+    switch (status) {
+    case GJK::NoCollision:
+    case GJK::NoCollisionEarlyStopped: return 0;
+    case GJK::Collision:
+    case GJK::CollisionWithPenetrationInformation: return 1;
+    default: return -1;
+    }
+}
+
+}  // namespace
+
+extern "C" void *coal_adapter_query_new(const void *shape_a, const void *shape_b,
+                                        const coal_query_desc *q) {
+    const coal::ShapeBase *a = static_cast<const coal::ShapeBase *>(shape_a);
+    const coal::ShapeBase *b = static_cast<const coal::ShapeBase *>(shape_b);
+    if (!a || !b || q->max_iterations < 1 || !(q->tolerance > 0)) return nullptr;
+    try {
+        return new Query(a, b, q);
+    } catch (const std::exception &e) {
+        std::fprintf(stderr, "agjk-bench: Coal threw: %s\n", e.what());
+        return nullptr;
+    }
+}
+
+extern "C" int coal_adapter_query_run(void *query) {
+    try {
+        return verdict_of(static_cast<Query *>(query)->run());
+    } catch (const std::exception &e) {
+        std::fprintf(stderr, "agjk-bench: Coal threw: %s\n", e.what());
+        return -2;
+    }
+}
+
+extern "C" void coal_adapter_query_free(void *query) { delete static_cast<Query *>(query); }
+
+extern "C" int coal_adapter_run(const void *shape_a, const void *shape_b,
+                                const coal_query_desc *q, coal_answer *out) {
+    Query *query = static_cast<Query *>(coal_adapter_query_new(shape_a, shape_b, q));
+    if (!query) return -1;
+    try {
+        const int reps = q->reps > 0 ? q->reps : 1;
+        std::vector<double> times((size_t)reps);
+        GJK::Status status = GJK::DidNotRun;
+        for (int r = 0; r < reps; ++r) {
+            const double t0 = q->now_ns();
+            status = query->run();
+            times[(size_t)r] = q->now_ns() - t0;
+            sink = query->gjk.distance;
+        }
+        out->coal_status = (int)status;
+        out->iterations = (int)query->gjk.getNumIterations();
+        out->verdict = verdict_of(status);
+        out->distance = out->verdict == 1 ? 0.0 : query->gjk.distance;
+        out->time_ns = q->reps > 0 ? q->trimmed_mean(times.data(), reps) : 0.0;
+        out->support_calls = (int)query->count_support_calls();
+        delete query;
         return 0;
     } catch (const std::exception &e) {
         std::fprintf(stderr, "agjk-bench: Coal threw: %s\n", e.what());
+        delete query;
         return -1;
     }
 }

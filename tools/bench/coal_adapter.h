@@ -69,6 +69,14 @@ void coal_adapter_shape_free(void *shape);
 int coal_adapter_run(const void *shape_a, const void *shape_b, const coal_query_desc *q,
                      coal_answer *out);
 
+/* A query prepared once (Coal's GJK object, the transforms) and run one time
+ * per call of coal_adapter_query_run: exactly the timed region of
+ * coal_adapter_run, for instruction counting (tools/bench/callgrind.sh).
+ * _run returns the verdict (1, 0, -1) or -2 if Coal threw. */
+void *coal_adapter_query_new(const void *shape_a, const void *shape_b, const coal_query_desc *q);
+int coal_adapter_query_run(void *query);
+void coal_adapter_query_free(void *query);
+
 #ifdef __cplusplus
 }
 #endif

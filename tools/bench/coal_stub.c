@@ -26,3 +26,17 @@ int coal_adapter_run(const void *shape_a, const void *shape_b, const coal_query_
     (void)out;
     return -1;
 }
+
+void *coal_adapter_query_new(const void *shape_a, const void *shape_b, const coal_query_desc *q) {
+    (void)shape_a;
+    (void)shape_b;
+    (void)q;
+    return NULL;
+}
+
+int coal_adapter_query_run(void *query) {
+    (void)query;
+    return -2;
+}
+
+void coal_adapter_query_free(void *query) { (void)query; }
