@@ -79,8 +79,8 @@ done
     echo "Instructions (callgrind Ir), plain GJK, tolerance 1e-8, $problems problems per workload"
     echo "(close: distance mode; distant: Boolean mode). simplex and support path: all their"
     echo "instructions / all support calls; loop / call and fixed / query: least-squares fit"
-    echo "of the remaining instructions per query against its support calls (\"-\": every"
-    echo "query made the same number of calls, so all of it is listed as fixed)."
+    echo "of the remaining instructions per query against its support calls (\"-\": the"
+    echo "queries made (nearly) the same number of calls, so all of it is listed as fixed)."
 } >>"$summary"
 cat "$summary"
 echo "callgrind.sh: dumps and $summary" >&2

@@ -12,14 +12,16 @@ support_calls N verdict V" per query, in dump order). Prints one JSON object.
 Attribution, instruction by instruction (self costs; --compress-pos=no and
 --compress-strings=no dumps):
 - agjk (built -O2 -g, the real code, nothing un-inlined): an instruction
-  belongs to the *source file of its line* when that file is src/simplex.c
+  belongs to the *source file of its line* when that file is src/simplex*.c
   (simplex projection), src/shape_*.c or src/minkowski.h (support path: the
   shape callbacks and the inlined Minkowski support wrapper); otherwise to the
-  file of its function: src/simplex.c -> simplex, src/shape_*.c -> support,
+  file of its function: src/simplex*.c -> simplex, src/shape_*.c -> support,
   functions of src/minkowski.c named *support* -> support, the rest of src/
-  and the driver's measured_agjk -> rest. Helpers of vec3.h inlined into the
-  Minkowski wrapper carry vec3.h lines and count as rest (a small
-  under-count of the support path).
+  and the driver's measured_agjk -> rest. If the Minkowski wrapper is itself
+  inlined into the solver, the vec3.h helpers inlined into it carry vec3.h
+  lines and count as rest (a small under-count of the support path). On agjk 0.1.0 (out-of-line
+  agjk__simplex_project and agjk__minkowski_support) the two categories equal
+  callgrind_annotate --inclusive=yes of those functions.
 - Coal (libcoal.so has symbols, no line info): by function name:
   GJK::project*Origin and its helpers -> simplex; getSupportFuncTpl,
   getShapeSupport, getSupport -> support; the rest of coal:: and the
@@ -29,9 +31,9 @@ Attribution, instruction by instruction (self costs; --compress-pos=no and
 
 "rest" is then split per query q by least squares, rest_q = fixed + loop * n_q
 (n_q the query's support calls): loop is the bookkeeping per support call,
-fixed the cost per query (validation, set-up, result). When every query has
-the same n_q (one-iteration Boolean queries) the split is not identifiable and
-all of rest is reported as fixed.
+fixed the cost per query (validation, set-up, result). When the n_q hardly
+vary (standard deviation below 0.5 call: one-iteration Boolean queries) the
+split is not identifiable and all of rest is reported as fixed.
 """
 import json
 import re
@@ -41,7 +43,7 @@ SIMPLEX, SUPPORT, REST = "simplex", "support", "rest"
 
 
 def agjk_file_category(path):
-    if path.endswith("/src/simplex.c"):
+    if re.search(r"/src/simplex[a-z0-9_]*\.c$", path):
         return SIMPLEX
     if re.search(r"/src/shape_[a-z0-9_]*\.c$", path) or path.endswith("/src/minkowski.h"):
         return SUPPORT
@@ -172,7 +174,7 @@ def main():
     mean_n = n_calls / n_q
     mean_r = sum(rest) / n_q
     var_n = sum((c - mean_n) ** 2 for c in calls)
-    if var_n > 0:
+    if var_n / n_q >= 0.25:
         loop = sum((c - mean_n) * (r - mean_r) for c, r in zip(calls, rest)) / var_n
         fixed = mean_r - loop * mean_n
     else:
