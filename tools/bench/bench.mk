@@ -38,9 +38,10 @@ $(OUT)/tools/bench/hull_support.o: tools/bench/hull_support.c $(BENCH_HDRS) $(HE
 
 $(BENCH_BIN): $(OUT)/tools/bench/main.o $(OUT)/tools/bench/hull_support.o $(BENCH_LIB) \
               $(BENCH_MESH_LIB) $(OUT)/tests/common/libtestcommon.a $(LIB_A)
-	$(CC) $(ALL_CFLAGS) -o $@ $(OUT)/tools/bench/main.o $(OUT)/tools/bench/hull_support.o \
+	$(or $(BENCH_LD),$(CC)) $(ALL_CFLAGS) -o $@ $(OUT)/tools/bench/main.o \
+	    $(OUT)/tools/bench/hull_support.o $(BENCH_EXTRA_OBJS) \
 	    $(BENCH_LIB) $(BENCH_MESH_LIB) $(OUT)/tests/common/libtestcommon.a $(LIB_A) \
-	    $(BENCH_MESH_LIBS) $(BENCH_CCD_LIBS) -lm
+	    $(BENCH_MESH_LIBS) $(BENCH_CCD_LIBS) $(BENCH_EXTRA_LIBS) -lm
 
 TOOL_BINS += $(BENCH_BIN)
 

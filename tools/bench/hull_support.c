@@ -31,3 +31,11 @@ void bench_hull_free(void *aux) {
     mesh_hull_free(aux);
     free(aux);
 }
+
+int bench_hull_triangles(const bench_shape *s, const int32_t **triangles) {
+    const mesh_hull *h = s->aux;
+    *triangles = NULL;
+    if (!h || h->dimension != 3 || !h->triangles || s->polytope.vertices != h->vertices) return 0;
+    *triangles = h->triangles;
+    return (int)h->triangle_count;
+}

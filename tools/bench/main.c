@@ -9,6 +9,7 @@
 
 #include "bench.h"
 #include "ccd_adapter.h"
+#include "coal_bench.h"
 #include "guard.h"
 #include "hull_support.h"
 #include "mesh_io.h"
@@ -32,6 +33,8 @@ static void usage(FILE *f) {
         "  --wp-pairs K      pairs in the work-precision run (default 20; 0 disables)\n"
         "  --wp-reps R       repetitions in the work-precision run (default 10)\n"
         "  --ccd-reps R      repetitions in the libccd timing (default 50; 0 disables it)\n"
+        "  --coal-reps R     repetitions in the agjk/Coal timing (default 100; 0 disables it;\n"
+        "                    needs a build with Coal: tools/fetch-coal.sh)\n"
         "  --tolerance T     duality-gap tolerance of the tables (default 1e-8)\n"
         "  --relative        read tolerances as relative (AGJK_TOLERANCE_RELATIVE: g <= T ||x||^2)\n"
         "                    for agjk's methods; default absolute, as in the paper\n"
@@ -62,6 +65,7 @@ static int parse(int argc, char **argv, bench_config *c) {
     c->wp_pairs = 20;
     c->wp_reps = 10;
     c->ccd_reps = 50;
+    c->coal_reps = 100;
     c->max_meshes = 1000;
     c->tolerance = 1e-8;
     c->mesh_scale = 0.1;
@@ -80,6 +84,7 @@ static int parse(int argc, char **argv, bench_config *c) {
         INT_OPT("--wp-pairs", wp_pairs)
         INT_OPT("--wp-reps", wp_reps)
         INT_OPT("--ccd-reps", ccd_reps)
+        INT_OPT("--coal-reps", coal_reps)
         INT_OPT("--max-meshes", max_meshes)
 #undef INT_OPT
         if (strcmp(a, "--relative") == 0) { c->relative = 1; continue; }
@@ -102,6 +107,7 @@ static int parse(int argc, char **argv, bench_config *c) {
             c->wp_pairs = 4;
             c->wp_reps = 3;
             c->ccd_reps = 5;
+            c->coal_reps = 10;
             c->max_meshes = 100;
             continue;
         }
@@ -260,6 +266,7 @@ int main(int argc, char **argv) {
     bench_record *recs;
     ccd_bench_record *ccd_recs = NULL;
     unsigned char *ccd_outcome = NULL;
+    coal_bench_data *coal;
     int h, cap_problems, cap_shapes;
     double t0, t_all = bench_now_ns();
     static char command[1024];
@@ -370,6 +377,8 @@ int main(int argc, char **argv) {
         rep.ccd_count = set.problem_count;
     }
 
+    coal = coal_bench_run(&cfg, &set);
+
     {
         /* What an empty timed region costs: included in every time reported. */
         double t[1000];
@@ -386,6 +395,8 @@ int main(int argc, char **argv) {
     rep.mesh_note = mesh_note;
     rep.seconds[4] = (bench_now_ns() - t_all) * 1e-9;
     if (bench_write_reports(&rep) != 0) return 2;
+    if (coal_bench_write(&rep, coal) != 0) return 2;
+    coal_bench_free(coal);
     if (cfg.raw_path) write_raw(cfg.raw_path, &set, recs, rep.rec_count);
     {
         /* Exit status: non-zero if any result lies outside its certified bound. */

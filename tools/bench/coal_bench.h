@@ -1,0 +1,41 @@
+/* SPDX-License-Identifier: MIT */
+/* agjk against Coal 3.0.3 on the benchmark's problems: the same method (GJK,
+ * Nesterov, Nesterov with normalization, Polyak), the same tolerance, cap and
+ * initial guess, in the same process with the same clock, each problem timed
+ * for agjk and right after for Coal. Coal is optional (tools/fetch-coal.sh);
+ * without it the report says how to get it. */
+#ifndef AGJK_BENCH_COAL_BENCH_H
+#define AGJK_BENCH_COAL_BENCH_H
+
+#include "bench.h"
+
+/* One problem x method x mode, answered and timed by both libraries. */
+typedef struct coal_bench_record {
+    bench_record agjk, coal;   /* judged by bench_evaluate(); Coal has no certified
+                                  bound (coal.run.bound = -1) */
+    int coal_status;           /* coal::details::GJK::Status */
+    unsigned char agjk_off, coal_off; /* distance mode: a converged answer farther than
+                                         sqrt(tolerance) from the reference (outside the
+                                         duality gap's guarantee) */
+} coal_bench_record;
+
+typedef struct coal_bench_data {
+    coal_bench_record *recs;
+    int count;
+    int skipped_problems;      /* a shape without a Coal counterpart (no solid hull) */
+    int failed_runs;           /* Coal threw */
+    double seconds;
+    const char *version;
+} coal_bench_data;
+
+/* Runs the comparison when Coal was built in and cfg->coal_reps > 0; returns
+ * NULL (after saying why on stderr) otherwise. */
+coal_bench_data *coal_bench_run(const bench_config *cfg, const bench_set *set);
+void coal_bench_free(coal_bench_data *d);
+
+/* Appends the agjk/Coal section to <out>/tables.md (or, without Coal, how to
+ * get it), writes <out>/coal.csv and coal-ratios.md, and prints the ratio
+ * table on stdout. ccd: the libccd records (may be NULL). Returns 0 or -1. */
+int coal_bench_write(const bench_report *r, const coal_bench_data *d);
+
+#endif
