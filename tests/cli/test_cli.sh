@@ -32,10 +32,18 @@ bad() { fail=$((fail + 1)); echo "FAIL: $*"; }
 # loader contains the crash in a child process, which inherits the
 # sanitizer's signal handlers; with their default actions restored there the
 # contained crash is not reported (memory errors in our code still are).
+# Headers that ask assimp for gigabytes hit the sanitizer's allocation cap
+# (SAN_ENV in tests/stability/stability.mk) in that child: the sanitizer
+# reports the failed C++ `new` as out of memory before the child dies, which
+# is the containment working; such reports are allowed in these runs only.
 sanitizer_report='^==[0-9]+==ERROR: [A-Za-z]+Sanitizer|^SUMMARY: [A-Za-z]+Sanitizer|runtime error: '
+contained_oom='Sanitizer: (allocator is out of memory|out-of-memory|requested allocation size|allocation-size-too-big)'
 contained_crashes="ASAN_OPTIONS=${ASAN_OPTIONS:+$ASAN_OPTIONS:}handle_segv=0:handle_sigbus=0:handle_abort=0:handle_sigfpe=0:handle_sigill=0"
 crash_env=
 no_sanitizer_report() {
+    if [ -n "$crash_env" ]; then
+        grep -E "$sanitizer_report" "$tmp/err" | grep -Evq "$contained_oom" || return 0
+    fi
     if grep -Eq "$sanitizer_report" "$tmp/err"; then
         bad "$1: sanitizer report"
         sed 's/^/    stderr: /' "$tmp/err" | head -40
@@ -324,6 +332,7 @@ printf 'ply\nformat ascii 1.0\nelement vertex 2000000000\nproperty float x\nprop
 printf '# nothing but a comment, long enough for assimp\n' >"$tmp/comments.obj"
 printf 'solid broken\nfacet normal 0 0 1\nouter loop\nvertex 0 0\n' >"$tmp/broken.stl"
 mkdir -p "$tmp/dir.off"
+crash_env=$contained_crashes
 for f in empty.off empty.obj trunc.obj trunc.off garbage.obj garbage.off utf16.obj zeros.off \
          nan.obj inf.off overflow.obj hugecount.off huge.ply comments.obj broken.stl dir.off \
          missing.off; do
@@ -333,6 +342,7 @@ done
 for f in empty.off garbage.obj nan.obj huge.ply; do
     expect_error "bad file $f (info)" info "$tmp/$f" --timeout 60
 done
+crash_env=
 run "nan message" 2 info "$tmp/nan.obj"; grep -q "not finite" "$tmp/err" && ok || bad "NaN message"
 run "UTF-16 message" 2 info "$tmp/utf16.obj"; grep -q "UTF-16" "$tmp/err" && ok || bad "UTF-16 message"
 
@@ -358,14 +368,16 @@ for name in sys.argv[2:]:
             b[random.randrange(len(b))] = random.randrange(256)
         ext = name.rsplit(".", 1)[1]
         open("%s/mut_%s_%02d.%s" % (sys.argv[1], ext, k, ext), "wb").write(b)' "$tmp" "$C" "$S"
+crash_env=$contained_crashes
 for f in "$tmp"/mut_*; do
-    env $contained_crashes "$AGJK" distance "$f" "$C" --timeout 60 >/dev/null 2>"$tmp/err"
+    env $crash_env "$AGJK" distance "$f" "$C" --timeout 60 >/dev/null 2>"$tmp/err"
     s=$?
     if ! no_sanitizer_report "corrupted $(basename "$f")"; then :
     elif [ "$s" -ne 0 ] && [ "$s" -ne 2 ]; then bad "corrupted $(basename "$f"): exit status $s"
     elif [ "$s" -eq 2 ] && [ ! -s "$tmp/err" ]; then bad "corrupted $(basename "$f"): no message"
     else ok; fi
 done
+crash_env=
 
 # --- bad command lines -----------------------------------------------------------------
 expect_error "one file" distance "$C"
