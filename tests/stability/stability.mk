@@ -14,7 +14,7 @@ STAB_CPPFLAGS := -Itests/common -Itests/stability
 STAB_CHECK_CFLAGS := $(shell $(PKG_CONFIG) --cflags check 2>/dev/null)
 STAB_CHECK_LIBS := $(shell $(PKG_CONFIG) --libs check 2>/dev/null)
 
-# The certified reference of tests/common: helper A's library when its
+# The certified reference of tests/common: that area's library when its
 # fragment defines TEST_COMMON_LIB, else built here from the same sources.
 ifeq ($(strip $(TEST_COMMON_LIB)),)
 STAB_REF_SRCS := $(filter-out tests/common/test_%.c,$(wildcard tests/common/*.c))
