@@ -44,7 +44,6 @@ LIB_SO    := $(OUT)/libagjk.so
 PC_FILE   := $(OUT)/agjk.pc
 HEADERS   := $(wildcard include/agjk/*.h)
 CMAKEDIR  ?= $(LIBDIR)/cmake/agjk
-MAN_PAGES := man/agjk.1 man/agjk.3
 SIZEOF_VOID_P := $(or $(shell $(CC) -dM -E - </dev/null 2>/dev/null | sed -n 's/.*__SIZEOF_POINTER__ //p'),8)
 
 # Quiet output unless V=1 (or make -s, which silences everything): recipes
@@ -140,7 +139,7 @@ uninstall:
 	    $(DESTDIR)$(LIBDIR)/pkgconfig/agjk.pc \
 	    $(DESTDIR)$(CMAKEDIR)/agjkConfig.cmake $(DESTDIR)$(CMAKEDIR)/agjkConfigVersion.cmake \
 	    $(foreach b,$(INSTALL_BINS),$(DESTDIR)$(BINDIR)/$(notdir $(b))) \
-	    $(MAN_PAGES:man/agjk.%=$(DESTDIR)$(MANDIR)/man%/agjk.%)
+	    $(DESTDIR)$(MANDIR)/man1/agjk.1 $(DESTDIR)$(MANDIR)/man3/agjk.3
 	dirs=""; if [ -f $(INSTALL_MANIFEST) ]; then dirs=$$(sort -r -u $(INSTALL_MANIFEST)); \
 	    rm -f $(INSTALL_MANIFEST); fi; \
 	for d in $$dirs $(DESTDIR)$(INCLUDEDIR)/agjk $(DESTDIR)$(CMAKEDIR); do \
