@@ -11,11 +11,11 @@
 #   tests/build/cmake-package.sh                  installs with make install-lib
 #   tests/build/cmake-package.sh --meson BUILDDIR installs BUILDDIR with meson install
 set -eu
-top=$(cd "$(dirname "$0")/../.." && pwd)
 if ! command -v cmake >/dev/null 2>&1; then
     echo "cmake package: skipped, cmake not found (Debian: apt-get install cmake)"
     exit 77
 fi
+top=$(cd "$(dirname "$0")/../.." && pwd)
 tmp=$(mktemp -d "${TMPDIR:-/tmp}/agjk-cmake.XXXXXX")
 trap 'rm -rf "$tmp"' EXIT
 log=$tmp/log

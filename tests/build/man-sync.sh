@@ -6,7 +6,8 @@
 #  - each "agjk COMMAND" subsection of the man page's COMMANDS names exactly
 #    the options of `agjk COMMAND --help`;
 #  - every key of the JSON and text outputs below, and every exit status of
-#    `agjk --help`, appears in the man page.
+#    `agjk --help`, appears in the man page;
+#  - agjk(3) describes every public header (include/agjk/*.h).
 # A new option or output key fails this test until man/agjk.1 documents it
 # (a new JSON key: add the command line that prints it to QUERIES below).
 #
@@ -98,6 +99,12 @@ for s in $(sed -n '/^EXIT STATUS/,/^$/s/^ *\([0-9]\)  .*/\1/p' "$tmp/help.main")
     else
         bad "exit status $s is not in agjk(1)'s EXIT STATUS"
     fi
+done
+
+# agjk(3) points to every public header.
+for h in "$SRC"/include/agjk/*.h; do
+    h=agjk/$(basename "$h")
+    if grep -q "^\.I $h\$" "$SRC/man/agjk.3"; then pass=$((pass + 1)); else bad "agjk(3) does not describe <$h>"; fi
 done
 
 echo "man page sync: $pass passed, $fail failed"
