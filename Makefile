@@ -50,10 +50,16 @@ SIZEOF_VOID_P := $(or $(shell $(CC) -dM -E - </dev/null 2>/dev/null | sed -n 's/
 # are not echoed, and compiler and archiver calls print one short line each
 # (tools/build/quiet.sh).
 V ?= 0
+# A CC or AR taken from the environment is left alone: make would export the
+# wrapped value to the programs it runs (tests that compile, cmake).
 ifneq ($(V),1)
 ifeq ($(findstring s,$(firstword -$(MAKEFLAGS))),)
+ifneq ($(origin CC),environment)
 override CC := $(CURDIR)/tools/build/quiet.sh CC $(CC)
+endif
+ifneq ($(origin AR),environment)
 override AR := $(CURDIR)/tools/build/quiet.sh AR $(AR)
+endif
 endif
 .SILENT:
 endif

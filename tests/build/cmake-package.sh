@@ -16,8 +16,11 @@ if ! command -v cmake >/dev/null 2>&1; then
     exit 77
 fi
 top=$(cd "$(dirname "$0")/../.." && pwd)
+# The consumer must find the library through what CMake recorded, not through
+# a search path of the caller's (meson test sets one to its build directory).
+unset LD_LIBRARY_PATH
 tmp=$(mktemp -d "${TMPDIR:-/tmp}/agjk-cmake.XXXXXX")
-trap 'rm -rf "$tmp"' EXIT
+trap '[ -n "${KEEP:-}" ] || rm -rf "$tmp"' EXIT
 log=$tmp/log
 version=$(sed -n 's/^VERSION *:= *//p' "$top/Makefile")
 major=${version%%.*}
