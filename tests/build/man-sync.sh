@@ -7,7 +7,8 @@
 #    the options of `agjk COMMAND --help`;
 #  - every key of the JSON and text outputs below, and every exit status of
 #    `agjk --help`, appears in the man page;
-#  - agjk(3) describes every public header (include/agjk/*.h).
+#  - agjk(3) describes every public header (include/agjk/*.h), and both pages
+#    carry the version of `agjk --version`.
 # A new option or output key fails this test until man/agjk.1 documents it
 # (a new JSON key: add the command line that prints it to QUERIES below).
 #
@@ -99,6 +100,13 @@ for s in $(sed -n '/^EXIT STATUS/,/^$/s/^ *\([0-9]\)  .*/\1/p' "$tmp/help.main")
     else
         bad "exit status $s is not in agjk(1)'s EXIT STATUS"
     fi
+done
+
+# Both pages carry the version of the tool (.TH ... "agjk X.Y.Z").
+version=$("$AGJK" --version | sed -n 's/^agjk \([0-9][0-9.]*\) .*/\1/p')
+for page in "$MAN" "$SRC/man/agjk.3"; do
+    if grep -q "^\.TH .*\"agjk $version\"" "$page"; then pass=$((pass + 1))
+    else bad "$(basename "$page"): .TH does not say agjk $version (agjk --version)"; fi
 done
 
 # agjk(3) points to every public header.

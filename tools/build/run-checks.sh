@@ -37,7 +37,7 @@ for t in "$@"; do
     last=$(grep -v '^[[:space:]]*$' "$log" | tail -n 1 | cut -c 1-90)
     if [ "$status" -eq 77 ]; then
         skip=$((skip + 1))
-        printf 'SKIP %-36s %s\n' "$name" "$last"
+        printf 'SKIP %-38s %s\n' "$name" "$last"
         continue
     fi
     if [ "$status" -eq 0 ] && grep -Eq "$sanitizer" "$log"; then
@@ -45,14 +45,14 @@ for t in "$@"; do
     fi
     if [ "$status" = 0 ]; then
         pass=$((pass + 1))
-        printf 'PASS %-36s %s\n' "$name" "$last"
+        printf 'PASS %-38s %s\n' "$name" "$last"
     else
         fail=$((fail + 1))
         failed="$failed $name"
         if [ "$status" = sanitizer ]; then
-            printf 'FAIL %-36s exit status 0, but a sanitizer report (log: %s)\n' "$name" "$log"
+            printf 'FAIL %-38s exit status 0, but a sanitizer report (log: %s)\n' "$name" "$log"
         else
-            printf 'FAIL %-36s exit status %s (log: %s)\n' "$name" "$status" "$log"
+            printf 'FAIL %-38s exit status %s (log: %s)\n' "$name" "$status" "$log"
         fi
         if [ "${V:-0}" != 1 ]; then
             lines=$(wc -l <"$log")
