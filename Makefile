@@ -1,9 +1,16 @@
 # agjk: GNU make build. meson.build builds and tests the same sources.
 #
 #   make                 library (static + shared), tools
-#   make check           all tests (Check framework) + install smoke test
-#   make install PREFIX=/usr/local [DESTDIR=...]
+#   make check           all tests (Check framework) + install smoke tests
+#   make install PREFIX=/usr/local [DESTDIR=...]   library, agjk CLI, man pages
+#   make install-lib     only what a C user links: headers, libagjk, agjk.pc,
+#                        the CMake package (builds nothing but the library)
+#   make uninstall       removes what install put there, and the directories
+#                        it created once they are empty
 #   make check-abi       compare the shared library against abi/libagjk.abi (libabigail)
+#
+# Output: one short line per compiled file and per test program; V=1 shows the
+# full commands and test output (test output is always in $(OUT)/check-logs/).
 #
 # Each area of the tree adds its programs and rules in its own fragment
 # (tests/*/*.mk, tools/*/*.mk), so the areas stay independent.
@@ -36,6 +43,26 @@ LIB_SO_NAME := libagjk.so.$(SOVERSION)
 LIB_SO    := $(OUT)/libagjk.so
 PC_FILE   := $(OUT)/agjk.pc
 HEADERS   := $(wildcard include/agjk/*.h)
+CMAKEDIR  ?= $(LIBDIR)/cmake/agjk
+SIZEOF_VOID_P := $(or $(shell $(CC) -dM -E - </dev/null 2>/dev/null | sed -n 's/.*__SIZEOF_POINTER__ //p'),8)
+
+# Quiet output unless V=1 (or make -s, which silences everything): recipes
+# are not echoed, and compiler and archiver calls print one short line each
+# (tools/build/quiet.sh).
+V ?= 0
+# A CC or AR taken from the environment is left alone: make would export the
+# wrapped value to the programs it runs (tests that compile, cmake).
+ifneq ($(V),1)
+ifeq ($(findstring s,$(firstword -$(MAKEFLAGS))),)
+ifneq ($(origin CC),environment)
+override CC := $(CURDIR)/tools/build/quiet.sh CC $(CC)
+endif
+ifneq ($(origin AR),environment)
+override AR := $(CURDIR)/tools/build/quiet.sh AR $(AR)
+endif
+endif
+.SILENT:
+endif
 
 # Filled by the fragments.
 TOOL_BINS  :=
@@ -43,7 +70,7 @@ CHECK_BINS :=
 CHECK_SCRIPTS :=
 CLEAN_EXTRA :=
 
-.PHONY: all lib check install uninstall clean check-abi abi-baseline check-install
+.PHONY: all lib check install install-lib uninstall clean check-abi abi-baseline check-install
 all: lib tools
 
 lib: $(LIB_A) $(LIB_SO) $(PC_FILE)
@@ -73,19 +100,24 @@ $(PC_FILE): agjk.pc.in Makefile
 
 tools: $(TOOL_BINS)
 
-# Every test program runs; the summary line counts programs, and the target
-# fails if any failed.
+# Every test program runs (tools/build/run-checks.sh): one line each, the log
+# of a failed one, and the summary `test programs: N passed, N failed`; the
+# target fails if any failed. Logs: $(OUT)/check-logs/.
 check: all $(CHECK_BINS)
-	@pass=0; fail=0; \
-	for t in $(CHECK_BINS) $(CHECK_SCRIPTS); do \
-	    echo "== $$t"; \
-	    if ./$$t; then pass=$$((pass+1)); else fail=$$((fail+1)); echo "FAILED: $$t"; fi; \
-	done; \
-	echo "test programs: $$pass passed, $$fail failed"; \
-	test $$fail -eq 0
+	OUT=$(OUT) V=$(V) sh tools/build/run-checks.sh $(OUT)/check-logs $(CHECK_BINS) $(CHECK_SCRIPTS)
 
-install: lib tools
-	install -d $(DESTDIR)$(LIBDIR) $(DESTDIR)$(INCLUDEDIR)/agjk $(DESTDIR)$(LIBDIR)/pkgconfig $(DESTDIR)$(BINDIR)
+# The CMake package: relocatable, every path computed from the file's place
+# (<libdir>/cmake/agjk); libdir and includedir are given relative to the
+# prefix when they lie under it.
+CMAKE_SUBST = sed -e 's|@PREFIX@|$(PREFIX)|g' -e 's|@LIBDIR_REL@|$(patsubst $(PREFIX)/%,%,$(LIBDIR))|g' \
+    -e 's|@INCLUDEDIR_REL@|$(patsubst $(PREFIX)/%,%,$(INCLUDEDIR))|g' -e 's|@VERSION@|$(VERSION)|g' \
+    -e 's|@SOVERSION@|$(SOVERSION)|g' -e 's|@SIZEOF_VOID_P@|$(SIZEOF_VOID_P)|g'
+# Directories the installation created, for `make uninstall`.
+INSTALL_MANIFEST = $(DESTDIR)$(CMAKEDIR)/agjk-created-dirs.txt
+
+install-lib: lib
+	sh tools/build/install-dirs.sh $(INSTALL_MANIFEST) $(DESTDIR)$(LIBDIR) \
+	    $(DESTDIR)$(INCLUDEDIR)/agjk $(DESTDIR)$(LIBDIR)/pkgconfig $(DESTDIR)$(CMAKEDIR)
 	install -m 644 $(HEADERS) $(DESTDIR)$(INCLUDEDIR)/agjk/
 	install -m 644 $(LIB_A) $(DESTDIR)$(LIBDIR)/
 	install -m 755 $(LIB_SO_REAL) $(DESTDIR)$(LIBDIR)/
@@ -94,13 +126,31 @@ install: lib tools
 	sed -e 's|@PREFIX@|$(PREFIX)|g' -e 's|@LIBDIR@|$(LIBDIR)|g' \
 	    -e 's|@INCLUDEDIR@|$(INCLUDEDIR)|g' -e 's|@VERSION@|$(VERSION)|g' \
 	    agjk.pc.in > $(DESTDIR)$(LIBDIR)/pkgconfig/agjk.pc
+	$(CMAKE_SUBST) cmake/agjkConfig.cmake.in > $(DESTDIR)$(CMAKEDIR)/agjkConfig.cmake
+	$(CMAKE_SUBST) cmake/agjkConfigVersion.cmake.in > $(DESTDIR)$(CMAKEDIR)/agjkConfigVersion.cmake
+	echo "installed the agjk library into $(DESTDIR)$(PREFIX)"
+
+# The library, the agjk CLI and the man pages (no benchmark, no test helpers).
+install: install-lib $(INSTALL_BINS)
+	sh tools/build/install-dirs.sh $(INSTALL_MANIFEST) $(DESTDIR)$(BINDIR) \
+	    $(DESTDIR)$(MANDIR)/man1 $(DESTDIR)$(MANDIR)/man3
 	$(if $(INSTALL_BINS),install -m 755 $(INSTALL_BINS) $(DESTDIR)$(BINDIR)/)
+	install -m 644 man/agjk.1 $(DESTDIR)$(MANDIR)/man1/
+	install -m 644 man/agjk.3 $(DESTDIR)$(MANDIR)/man3/
+	echo "installed $(notdir $(INSTALL_BINS)) and the man pages into $(DESTDIR)$(PREFIX)"
 
 uninstall:
 	rm -f $(HEADERS:include/%=$(DESTDIR)$(INCLUDEDIR)/%) \
 	    $(DESTDIR)$(LIBDIR)/libagjk.a $(DESTDIR)$(LIBDIR)/libagjk.so* \
 	    $(DESTDIR)$(LIBDIR)/pkgconfig/agjk.pc \
-	    $(foreach b,$(INSTALL_BINS),$(DESTDIR)$(BINDIR)/$(notdir $(b)))
+	    $(DESTDIR)$(CMAKEDIR)/agjkConfig.cmake $(DESTDIR)$(CMAKEDIR)/agjkConfigVersion.cmake \
+	    $(foreach b,$(INSTALL_BINS),$(DESTDIR)$(BINDIR)/$(notdir $(b))) \
+	    $(DESTDIR)$(MANDIR)/man1/agjk.1 $(DESTDIR)$(MANDIR)/man3/agjk.3
+	dirs=""; if [ -f $(INSTALL_MANIFEST) ]; then dirs=$$(sort -r -u $(INSTALL_MANIFEST)); \
+	    rm -f $(INSTALL_MANIFEST); fi; \
+	for d in $$dirs $(DESTDIR)$(INCLUDEDIR)/agjk $(DESTDIR)$(CMAKEDIR); do \
+	    rmdir "$$d" 2>/dev/null || true; done
+	echo "uninstalled agjk from $(DESTDIR)$(PREFIX)"
 
 # ABI: abi/libagjk.abi is the committed baseline (abidw); check-abi fails on any
 # change libabigail reports. Regenerate deliberately with `make abi-baseline`.

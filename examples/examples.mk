@@ -6,7 +6,8 @@ $(OUT)/examples/%: examples/%.c $(LIB_A)
 	@mkdir -p $(dir $@)
 	$(CC) $(EXAMPLE_CFLAGS) $< -o $@ $(LIB_A) -lm
 
-# Static, with unused sections dropped: what an embedded user would link.
+# Linked against libagjk.a with unused sections dropped (the program itself
+# is dynamically linked): what an embedded user would link.
 $(OUT)/examples/spheres_and_boxes: examples/spheres_and_boxes.c $(LIB_A)
 	@mkdir -p $(dir $@)
 	$(CC) $(EXAMPLE_CFLAGS) -ffunction-sections -fdata-sections $< -o $@ \

@@ -1,9 +1,22 @@
 #!/bin/sh
 # "Leave out what a scene does not need": a program using only spheres and
-# boxes, linked statically with --gc-sections, must contain no polytope, hull,
-# adjacency, ellipsoid, cylinder or cone code. Prints its text size.
+# boxes, linked against libagjk.a with --gc-sections (a dynamically linked
+# program with the library linked in statically), must contain no polytope,
+# hull, adjacency, ellipsoid, cylinder or cone code. Prints its text size.
+#
+#   examples/lean-link.sh [PROGRAM]
+# Default: $OUT/examples/spheres_and_boxes (OUT defaults to out), built first
+# with make when no program is given.
 set -eu
-bin=${1:-out/examples/spheres_and_boxes}
+if [ $# -ge 1 ]; then
+    bin=$1
+else
+    top=$(cd "$(dirname "$0")/.." && pwd)
+    target=${OUT:-out}/examples/spheres_and_boxes
+    # Up to date already under `make check`; built here when run alone.
+    make -s -C "$top" OUT="${OUT:-out}" "$target" >/dev/null
+    case $target in /*) bin=$target ;; *) bin=$top/$target ;; esac
+fi
 unwanted=$(nm "$bin" | grep -i -E 'polytope|adjacency|hull|ellipsoid|cylinder|cone_|capsule|segment_support|(^| |_)epa' || true)
 if [ -n "$unwanted" ]; then
     echo "lean link: unexpected symbols in $bin:" >&2
@@ -24,6 +37,6 @@ lib_text=$(awk '
     /^ \.text/ && /libagjk\.a\(/ { s += hex($3) }
     END { print s + 0 }' "$bin.map")
 members=$(sed -n '/^Linker script and memory map/,$p' "$bin.map" | grep -o 'libagjk\.a([a-z_]*\.o)' | sort -u | sed 's/.*(\(.*\))/\1/' | tr '\n' ' ')
-echo "lean link: spheres+boxes static binary: .text $text bytes, of which agjk $lib_text bytes"
+echo "lean link: spheres+boxes program (libagjk.a linked in): .text $text bytes, of which agjk $lib_text bytes"
 echo "lean link: agjk objects linked: $members"
 echo "lean link: 1 passed, 0 failed"

@@ -11,8 +11,8 @@
 #include "shape_common.h"
 
 /* Below this many vertices a scan beats hill climbing (Coal uses 32; see the
- * README for our measurement). */
-#define HILL_CLIMB_MIN_VERTICES 32
+ * README for our measurement). Public, so that tools can say which is used. */
+#define HILL_CLIMB_MIN_VERTICES AGJK_POLYTOPE_HILL_CLIMB_MIN_VERTICES
 
 static int clamp_hint(int hint, int count) { return (hint >= 0 && hint < count) ? hint : 0; }
 

@@ -74,6 +74,11 @@ typedef struct agjk_polytope {
     const int32_t *neighbors;        /**< NULL, or neighbor_offsets[vertex_count] entries */
 } agjk_polytope;
 
+/** Polytopes with an adjacency find support points by hill climbing from this
+ *  many vertices on; below it the vertices are scanned even when an adjacency
+ *  is given (a scan is faster there). */
+#define AGJK_POLYTOPE_HILL_CLIMB_MIN_VERTICES 32
+
 /** A single point at the local origin. */
 AGJK_API agjk_status agjk_shape_point(agjk_shape *shape);
 /** A sphere of `radius` >= 0 centred at the local origin (a point with a margin). */

@@ -1,4 +1,4 @@
-# tests/ccd: libccd comparison suite, correctness part (owner: helper C).
+# tests/ccd: libccd comparison suite, correctness part.
 # Shares the problem generator and the libccd adapter with tools/bench. This
 # fragment is read before tests/common and tools/bench, so the archives they
 # build are named literally (prerequisites expand when read).

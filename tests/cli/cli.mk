@@ -1,5 +1,5 @@
 # tests/cli: the agjk CLI end to end, hulls, adjacency and hill-climbing
-# support (owner: helper B). This fragment is read before tools/cli and
+# support. This fragment is read before tools/cli and
 # tools/mesh, so their outputs are named literally in prerequisites.
 #
 #   make check-cli    only these tests

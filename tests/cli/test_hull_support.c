@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: MIT */
-/* Hulls, adjacency and hill-climbing support (owner: helper B).
+/* Hulls, adjacency and hill-climbing support.
  *
  * 1. agjk_polytope_adjacency_build_into / agjk_polytope_build_adjacency
  *    against a brute-force edge set, and their input checks.

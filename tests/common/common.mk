@@ -1,5 +1,5 @@
-# tests/common: the long double reference solver and shared test helpers
-# (owner: helper A). Other fragments link $(TEST_COMMON_LIB) and add
+# tests/common: the long double reference solver and shared test helpers.
+# Other fragments link $(TEST_COMMON_LIB) and add
 # $(TEST_COMMON_CPPFLAGS). Note for fragments included before this one
 # (tests/ccd sorts first): a prerequisite list is expanded when read, so name
 # the archive literally there: $(OUT)/tests/common/libtestcommon.a.

@@ -36,7 +36,7 @@ typedef struct ref_result {
     long double lower;     /* certified lower bound on the distance */
     long double upper;     /* certified upper bound on the distance */
     int iterations;
-    /* --- appended by helper A (tests/common owner) --- */
+    /* --- appended fields --- */
     /* Unit vector, world frame, from A towards B along the closest points
      * (-x / |x| for the core closest point x of D = A - B); zero when the
      * core distance is zero or the shapes intersect. */

@@ -1,4 +1,4 @@
-# tests/core: one Check program per module of the core library (owner: helper A).
+# tests/core: one Check program per module of the core library.
 # Run one test alone: CK_RUN_CASE=<test name> out/tests/core/test_simplex
 
 CORE_TESTS := test_simplex test_shapes test_api test_analytic test_methods test_properties test_collide \

@@ -329,6 +329,33 @@ START_TEST(polytope_hill_climbing) {
 }
 END_TEST
 
+START_TEST(polytope_hill_climbing_threshold) {
+    /* Hill climbing is used from AGJK_POLYTOPE_HILL_CLIMB_MIN_VERTICES
+     * vertices on, as documented (and as `agjk info` reports). An adjacency
+     * with no edges tells the two apart: a climb stays at the hint, a scan
+     * finds the maximum. */
+    enum { N = AGJK_POLYTOPE_HILL_CLIMB_MIN_VERTICES };
+    agjk_vec3 v[N];
+    int32_t offsets[N + 1] = {0};
+    int32_t no_edges[1] = {0};
+    for (int i = 0; i < N; i++) v[i] = tu_vec((double)i, (double)(i * i % 7), (double)(i % 3));
+    for (int count = N - 1; count <= N; count++) {
+        agjk_polytope poly = {v, count, offsets, no_edges};
+        agjk_shape shape;
+        TU_CHECK_INT_EQ(agjk_shape_polytope(&shape, &poly), AGJK_STATUS_OK);
+        agjk_vec3 d = tu_vec(1, 0, 0), sup;
+        int hint = 0;
+        shape.support(shape.data, &d, &sup, &hint);
+        if (count < N)
+            TU_ENSURE(sup.x == count - 1, "%d vertices: support x = %g, scan gives %d", count, sup.x,
+                      count - 1);
+        else
+            TU_ENSURE(sup.x == 0.0, "%d vertices: support x = %g, a climb stays at vertex 0", count,
+                      sup.x);
+    }
+}
+END_TEST
+
 START_TEST(brute_hull_itself) {
     /* The test's hull: a cube's 8 corners give 12 triangles, an octahedron 8. */
     agjk_vec3 cube[8];
@@ -352,5 +379,6 @@ int main(void) {
     TU_ADD(s, polytope_rejects_bad_vertices);
     TU_ADD(s, brute_hull_itself);
     TU_ADD(s, polytope_hill_climbing);
+    TU_ADD(s, polytope_hill_climbing_threshold);
     return tu_run_suite(s);
 }

@@ -14,7 +14,7 @@ STAB_CPPFLAGS := -Itests/common -Itests/stability
 STAB_CHECK_CFLAGS := $(shell $(PKG_CONFIG) --cflags check 2>/dev/null)
 STAB_CHECK_LIBS := $(shell $(PKG_CONFIG) --libs check 2>/dev/null)
 
-# The certified reference of tests/common: helper A's library when its
+# The certified reference of tests/common: that area's library when its
 # fragment defines TEST_COMMON_LIB, else built here from the same sources.
 ifeq ($(strip $(TEST_COMMON_LIB)),)
 STAB_REF_SRCS := $(filter-out tests/common/test_%.c,$(wildcard tests/common/*.c))
@@ -54,13 +54,15 @@ SAN_FLAGS := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-fr
 SAN_ENV := ASAN_OPTIONS=detect_leaks=1:strict_string_checks=1:allocator_may_return_null=1:max_allocation_size_mb=4096:hard_rss_limit_mb=6144:verify_asan_link_order=0 \
            UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 check-asan:
-	$(SAN_ENV) $(MAKE) OUT=$(OUT)/asan OPT="-O1 -g $(SAN_FLAGS)" LDFLAGS="$(SAN_FLAGS)" check
+	$(SAN_ENV) $(MAKE) --no-print-directory OUT=$(OUT)/asan OPT="-O1 -g $(SAN_FLAGS)" \
+	    LDFLAGS="$(SAN_FLAGS)" check
 
 TSAN_FLAGS := -fsanitize=thread
 check-tsan:
-	$(MAKE) OUT=$(OUT)/tsan OPT="-O1 -g $(TSAN_FLAGS)" LDFLAGS="$(TSAN_FLAGS)" \
+	$(MAKE) --no-print-directory OUT=$(OUT)/tsan OPT="-O1 -g $(TSAN_FLAGS)" LDFLAGS="$(TSAN_FLAGS)" \
 	    $(OUT)/tsan/tests/stability/test_threads
-	TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1 ./$(OUT)/tsan/tests/stability/test_threads
+	TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1 OUT=$(OUT)/tsan V=$(V) \
+	    sh tools/build/run-checks.sh $(OUT)/tsan/check-logs $(OUT)/tsan/tests/stability/test_threads
 
 # Valgrind: every compiled test program of `make check` (scripts, including
 # those listed in CHECK_BINS, are skipped).

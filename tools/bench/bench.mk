@@ -1,5 +1,5 @@
 # tools/bench: agjk-bench, the benchmark of the paper's experiments, the
-# work-precision diagram and the libccd timing (owner: helper C).
+# work-precision diagram and the libccd timing.
 #
 #   make bench                 default size (~5 min on 2 cores), writes results/
 #   make bench-quick           a small run into $(OUT)/bench-quick/
@@ -11,7 +11,7 @@ BENCH_LIB_SRCS := rng.c problems.c nesmino.c solve.c evaluate.c stats.c guard.c 
 BENCH_LIB_OBJS := $(BENCH_LIB_SRCS:%.c=$(OUT)/tools/bench/%.o)
 BENCH_LIB      := $(OUT)/tools/bench/libbench.a
 BENCH_BIN      := $(OUT)/tools/bench/agjk-bench
-# Hulls with hill-climbing adjacency come from tools/mesh (helper B's Qhull
+# Hulls with hill-climbing adjacency come from tools/mesh (the Qhull
 # wrapper); its fragment is read after this one, so its archive is named here.
 BENCH_MESH_LIB := $(OUT)/tools/mesh/libagjkmesh.a
 BENCH_MESH_CPPFLAGS := -Itools/mesh
@@ -63,4 +63,5 @@ bench-plots:
 	@if command -v gnuplot >/dev/null 2>&1; then \
 	    cd $(BENCH_OUT) && gnuplot work-precision.gp && gnuplot iterations.gp && \
 	    echo "plots: $(BENCH_OUT)/work-precision.png $(BENCH_OUT)/iterations.png"; \
-	else echo "gnuplot not found: no PNG (the .gp scripts and data are in $(BENCH_OUT))"; fi
+	else echo "gnuplot not found: tables and data are in $(BENCH_OUT) (tables.md, *.csv); for the PNG plots:"; \
+	    echo "  apt-get install --no-install-recommends gnuplot-nox && make bench-plots BENCH_OUT=$(BENCH_OUT)"; fi

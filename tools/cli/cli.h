@@ -61,6 +61,11 @@ typedef struct cli_shape {
 } cli_shape;
 int cli_shape_load(const char *path, double scale, int with_adjacency, cli_shape *s);
 void cli_shape_free(cli_shape *s);
+/* Whether queries on this hull find support points by hill climbing (an
+ * adjacency and at least AGJK_POLYTOPE_HILL_CLIMB_MIN_VERTICES vertices) or
+ * by a scan; and the same in words, for `agjk info`. */
+int cli_hull_hill_climbing(const mesh_hull *h);
+const char *cli_hull_support_text(const mesh_hull *h);
 
 int cli_cmd_distance(int argc, char **argv);
 int cli_cmd_collide(int argc, char **argv);

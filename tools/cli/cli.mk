@@ -1,4 +1,4 @@
-# tools/cli: the `agjk` command-line tool (owner: helper B). Links the mesh
+# tools/cli: the `agjk` command-line tool. Links the mesh
 # library of tools/mesh (assimp + Qhull); that fragment is read after this one,
 # so its archive is named literally here.
 

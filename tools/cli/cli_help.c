@@ -15,6 +15,10 @@ static const char help_main[] =
     "    agjk hull     MESH -o OUT.off   write the convex hull (offline preprocessing)\n"
     "    agjk help [COMMAND] | agjk COMMAND --help | agjk --version\n"
     "\n"
+    "    Global options may also come before the command, as in\n"
+    "    agjk --json distance A B:\n"
+    "    --json, --timeout SECONDS, --memory-limit MB (see agjk help COMMAND).\n"
+    "\n"
     "DESCRIPTION\n"
     "    Each mesh file (OFF, OBJ, and any other format assimp reads: STL, PLY,\n"
     "    glTF, ...) stands for the convex hull of all its vertices: every mesh of\n"
@@ -81,13 +85,20 @@ static const char help_query_options[] =
     "        climbing over the hull's vertex graph (same answers; for comparison).\n"
     "\n"
     "OUTPUT\n"
+    "    Without --json, `key: value` lines: for distance, status, distance,\n"
+    "    bound, gap, witness_a, witness_b, normal, iterations, support_calls;\n"
+    "    for collide, status, normal, iterations, support_calls. A value the\n"
+    "    query did not compute is printed as n/a.\n"
     "    --json\n"
     "        Print one JSON object: query, status, colliding (collide only:\n"
     "        true, false, or null when not converged), distance, bound, gap,\n"
     "        witness_a, witness_b, normal (arrays of 3 numbers), iterations,\n"
     "        support_calls, momentum_stop_iteration, method, tolerance,\n"
     "        tolerance_mode, max_iterations. Numbers have 17 significant digits.\n"
-    "        Without --json the same fields are printed as `key: value` lines.\n";
+    "        A value the query did not compute is null: collide computes no\n"
+    "        distance, bound or witness points, and its gap only without a\n"
+    "        verdict (contact within tolerance, not converged); intersecting\n"
+    "        shapes have no normal and no gap.\n";
 
 static const char help_limits[] =
     "LIMITS\n"
@@ -134,7 +145,8 @@ static const char help_collide[] =
     "    Boolean query with early exit (Montaut et al. 2022, Alg. 2): stops at\n"
     "    the first plane that separates the shapes, or when the origin is found\n"
     "    inside the Minkowski difference. No witness points or distance are\n"
-    "    computed (printed as 0); `normal` is the separating plane's normal.\n"
+    "    computed (null in JSON); `normal` is the separating plane's normal\n"
+    "    (n/a, or null, when intersecting).\n"
     "\n"
     "    Exit status 0: intersecting, or touching to within the tolerance (the\n"
     "    safe answer for a collision check; --json tells `contact within\n"
@@ -155,8 +167,19 @@ static const char help_info[] =
     "    merging identical vertices), whether coordinates were read in double\n"
     "    precision, the hull kind (solid, flat (coplanar), collinear, single\n"
     "    point), the hull's vertex and triangle counts, which support function\n"
-    "    queries will use, and the axis-aligned bounding box of the vertices.\n"
-    "    --json prints the same as one JSON object.\n";
+    "    queries will use (hill climbing over the hull's vertex graph from the\n"
+    "    library's threshold of vertices on, otherwise a scan), and the\n"
+    "    axis-aligned bounding box of the vertices.\n"
+    "\n"
+    "OUTPUT\n"
+    "    Without --json, `key: value` lines: file, format, meshes, faces,\n"
+    "    vertices, precision, hull, hull_vertices, hull_triangles, support,\n"
+    "    bbox_min, bbox_max.\n"
+    "    --json\n"
+    "        Print one JSON object: file, format, meshes, faces, vertices,\n"
+    "        double_precision, hull, hull_dimension, hull_vertices,\n"
+    "        hull_triangles, hill_climbing (true when queries climb the vertex\n"
+    "        graph, false when they scan), bbox_min, bbox_max.\n";
 
 static const char help_hull[] =
     "NAME\n"
@@ -170,9 +193,14 @@ static const char help_hull[] =
     "    (17 significant digits, so doubles round-trip) and outward-oriented\n"
     "    triangles. Preprocess once, offline; a program embedding agjk can then\n"
     "    load the OFF's vertices into an agjk_polytope and build the adjacency\n"
-    "    with agjk_polytope_build_adjacency() from the triangles. `-o -` writes\n"
-    "    to standard output. A degenerate (flat, collinear, single-point) hull\n"
-    "    is written as its distinct points with no faces, with a warning.\n";
+    "    with agjk_polytope_build_adjacency() from the triangles. A degenerate\n"
+    "    (flat, collinear, single-point) hull is written as its distinct points\n"
+    "    with no faces, with a warning.\n"
+    "\n"
+    "OUTPUT\n"
+    "    -o FILE, --output FILE\n"
+    "        Where to write the OFF file (required); `-o -` writes to standard\n"
+    "        output.\n";
 
 void cli_print_help(const char *command, FILE *out) {
     if (!command) {

@@ -17,10 +17,7 @@ static void info_text(const char *path, const cli_shape *s) {
     printf("%-17s %s\n", "hull:", mesh_hull_kind(h));
     printf("%-17s %d\n", "hull_vertices:", (int)h->vertex_count);
     printf("%-17s %d\n", "hull_triangles:", (int)h->triangle_count);
-    printf("%-17s %s\n", "support:",
-           h->polytope.neighbor_offsets
-               ? "hill climbing over the hull's vertex graph (scan below the library's threshold)"
-               : "scan over the points (degenerate hull: the raw point set is used)");
+    printf("%-17s %s\n", "support:", cli_hull_support_text(h));
     printf("%-17s %.17g %.17g %.17g\n", "bbox_min:", h->bbox_min.x, h->bbox_min.y, h->bbox_min.z);
     printf("%-17s %.17g %.17g %.17g\n", "bbox_max:", h->bbox_max.x, h->bbox_max.y, h->bbox_max.z);
 }
@@ -41,7 +38,7 @@ static void info_json(const char *path, const cli_shape *s) {
            s->points.format, s->points.mesh_count, s->points.face_count, s->points.count,
            s->points.double_precision ? "true" : "false", mesh_hull_kind(h), h->dimension,
            (int)h->vertex_count, (int)h->triangle_count,
-           h->polytope.neighbor_offsets ? "true" : "false", h->bbox_min.x, h->bbox_min.y,
+           cli_hull_hill_climbing(h) ? "true" : "false", h->bbox_min.x, h->bbox_min.y,
            h->bbox_min.z, h->bbox_max.x, h->bbox_max.y, h->bbox_max.z);
 }
 

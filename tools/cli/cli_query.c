@@ -11,9 +11,28 @@
 
 #include <string.h>
 
+/* What a query computed; the rest is printed as JSON null (text: n/a).
+ * collide computes no distance, bound or witness points; no query has a
+ * normal or a gap when the origin is found inside A - B (intersecting); the
+ * gap of collide is reported only without a verdict (contact within
+ * tolerance, not converged): a separating plane ends it before any gap. */
+static int has_distance(const char *query) { return strcmp(query, "distance") == 0; }
+static int has_normal(const agjk_result *r) { return r->status != AGJK_STATUS_INTERSECTING; }
+static int has_gap(const char *query, const agjk_result *r) {
+    if (r->status == AGJK_STATUS_INTERSECTING) return 0;
+    return has_distance(query) || r->status == AGJK_STATUS_CONTACT_WITHIN_TOLERANCE ||
+           r->status == AGJK_STATUS_NOT_CONVERGED;
+}
+
 /* %.17g: every double printed round-trips exactly. */
-static void print_vec_json(FILE *f, const char *key, agjk_vec3 v) {
-    fprintf(f, "\"%s\": [%.17g, %.17g, %.17g]", key, v.x, v.y, v.z);
+static void print_vec_json(FILE *f, const char *key, int computed, agjk_vec3 v) {
+    if (computed) fprintf(f, "\"%s\": [%.17g, %.17g, %.17g]", key, v.x, v.y, v.z);
+    else fprintf(f, "\"%s\": null", key);
+}
+
+static void print_number_json(FILE *f, const char *key, int computed, double v) {
+    if (computed) fprintf(f, "\"%s\": %.17g, ", key, v);
+    else fprintf(f, "\"%s\": null, ", key);
 }
 
 static void print_json(FILE *f, const char *query, const cli_args *a, const agjk_result *r) {
@@ -26,13 +45,14 @@ static void print_json(FILE *f, const char *query, const cli_args *a, const agjk
                             : "null";
         fprintf(f, "\"colliding\": %s, ", c);
     }
-    fprintf(f, "\"distance\": %.17g, \"bound\": %.17g, \"gap\": %.17g, ", r->distance, r->bound,
-            r->gap);
-    print_vec_json(f, "witness_a", r->witness_a);
+    print_number_json(f, "distance", has_distance(query), r->distance);
+    print_number_json(f, "bound", has_distance(query), r->bound);
+    print_number_json(f, "gap", has_gap(query, r), r->gap);
+    print_vec_json(f, "witness_a", has_distance(query), r->witness_a);
     fputs(", ", f);
-    print_vec_json(f, "witness_b", r->witness_b);
+    print_vec_json(f, "witness_b", has_distance(query), r->witness_b);
     fputs(", ", f);
-    print_vec_json(f, "normal", r->normal);
+    print_vec_json(f, "normal", has_normal(r), r->normal);
     fprintf(f,
             ", \"iterations\": %d, \"support_calls\": %d, \"momentum_stop_iteration\": %d, "
             "\"method\": \"%s\", \"tolerance\": %.17g, \"tolerance_mode\": \"%s\", "
@@ -43,20 +63,25 @@ static void print_json(FILE *f, const char *query, const cli_args *a, const agjk
             (int)a->query.max_iterations);
 }
 
-static void print_vec_text(FILE *f, const char *key, agjk_vec3 v) {
-    fprintf(f, "%-15s %.17g %.17g %.17g\n", key, v.x, v.y, v.z);
+static void print_vec_text(FILE *f, const char *key, int computed, agjk_vec3 v) {
+    if (computed) fprintf(f, "%-15s %.17g %.17g %.17g\n", key, v.x, v.y, v.z);
+    else fprintf(f, "%-15s n/a\n", key);
 }
 
+/* distance: status, distance, bound, gap, witness_a, witness_b, normal,
+ * iterations, support_calls; collide: status, normal, iterations,
+ * support_calls. */
 static void print_text(FILE *f, const char *query, const agjk_result *r) {
     fprintf(f, "%-15s %s\n", "status:", agjk_status_string(r->status));
-    if (strcmp(query, "distance") == 0) {
+    if (has_distance(query)) {
         fprintf(f, "%-15s %.17g\n", "distance:", r->distance);
         fprintf(f, "%-15s %.17g\n", "bound:", r->bound);
-        fprintf(f, "%-15s %.17g\n", "gap:", r->gap);
-        print_vec_text(f, "witness_a:", r->witness_a);
-        print_vec_text(f, "witness_b:", r->witness_b);
+        if (has_gap(query, r)) fprintf(f, "%-15s %.17g\n", "gap:", r->gap);
+        else fprintf(f, "%-15s n/a\n", "gap:");
+        print_vec_text(f, "witness_a:", 1, r->witness_a);
+        print_vec_text(f, "witness_b:", 1, r->witness_b);
     }
-    print_vec_text(f, "normal:", r->normal);
+    print_vec_text(f, "normal:", has_normal(r), r->normal);
     fprintf(f, "%-15s %d\n", "iterations:", (int)r->iterations);
     fprintf(f, "%-15s %d\n", "support_calls:", (int)r->support_calls);
 }

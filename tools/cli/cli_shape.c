@@ -54,6 +54,22 @@ int cli_shape_load(const char *path, double scale, int with_adjacency, cli_shape
     return 1;
 }
 
+#define CLI_STRING(x) #x
+#define CLI_EXPAND_STRING(x) CLI_STRING(x)
+
+int cli_hull_hill_climbing(const mesh_hull *h) {
+    return h->polytope.neighbor_offsets &&
+           h->polytope.vertex_count >= AGJK_POLYTOPE_HILL_CLIMB_MIN_VERTICES;
+}
+
+const char *cli_hull_support_text(const mesh_hull *h) {
+    if (!h->polytope.neighbor_offsets)
+        return "scan over the points (degenerate hull: the raw point set is used)";
+    if (cli_hull_hill_climbing(h)) return "hill climbing over the hull's vertex graph";
+    return "scan over the hull vertices (fewer than the library's hill-climbing threshold, "
+           CLI_EXPAND_STRING(AGJK_POLYTOPE_HILL_CLIMB_MIN_VERTICES) " vertices)";
+}
+
 void cli_shape_free(cli_shape *s) {
     mesh_hull_free(&s->hull);
     mesh_points_free(&s->points);

@@ -1,5 +1,5 @@
 # tools/mesh: mesh loading (assimp) and convex hulls (Qhull) for the tools,
-# never linked into the core library (owner: helper B).
+# never linked into the core library.
 #
 #   make support-bench   builds $(OUT)/tools/mesh/support_bench: scan vs hill
 #                        climbing support cost by hull size (run by hand)
