@@ -430,7 +430,7 @@ run "distance text intersecting" 0 distance "$C" "$C" --pose-b 0.5 0.2 0 1 0 0 0
     ok || bad "distance text: normal and gap n/a"
 # Global options before the command mean the same as after it.
 run "--json before the command" 0 --json distance "$C" "$C" --pose-b 3 0 0 1 0 0 0 &&
-    check_json "--json before the command" "r['query'] == 'distance' and r['distance'] == 2"
+    check_json "--json before the command" "r['query'] == 'distance' and abs(r['distance'] - 2) <= 1e-12"
 run "global limits before the command" 0 --timeout 60 --memory-limit 0 --json info "$C" &&
     check_json "global options, info" "r['hull_vertices'] == 8"
 run "global option, text" 1 --timeout 60 collide "$C" "$C" --pose-b 3 0 0 1 0 0 0 &&

@@ -17,9 +17,14 @@ BENCH_COAL_CXXFLAGS := -std=c++17 $(OPT) -DNDEBUG -Wall -Wextra -Wpedantic \
 
 # Relink agjk-bench when Coal appears or disappears.
 BENCH_COAL_STAMP := $(OUT)/tools/bench/coal-found.stamp
-$(shell mkdir -p $(OUT)/tools/bench && \
-    { echo '$(BENCH_COAL_FOUND)' | cmp -s - $(BENCH_COAL_STAMP) || \
-      echo '$(BENCH_COAL_FOUND)' > $(BENCH_COAL_STAMP); })
+# Remade on every run that needs it, but rewritten (and so newer than its
+# dependents) only when the detection changed; targets that need no bench
+# (install-lib, install) never create it.
+$(BENCH_COAL_STAMP): bench-coal-detect
+	@mkdir -p $(dir $@)
+	@echo '$(BENCH_COAL_FOUND)' | cmp -s - $@ || echo '$(BENCH_COAL_FOUND)' > $@
+.PHONY: bench-coal-detect
+bench-coal-detect:
 
 ifneq ($(BENCH_COAL_FOUND),)
 BENCH_COAL_ADAPTER := $(OUT)/tools/bench/coal_adapter.o
