@@ -309,4 +309,6 @@ void agjk__solve(agjk__minkowski *md, const agjk__solve_input *in, agjk__solve_o
     }
     out->a = a;
     out->b = b;
+    for (int i = 0; i < count; ++i) out->simplex[i] = simplex[i];
+    out->simplex_count = count;
 }

@@ -1,0 +1,470 @@
+/* SPDX-License-Identifier: MIT */
+/* Penetration depth by the Expanding Polytope Algorithm (G. van den Bergen,
+ * "Proximity queries and penetration depth computation on 3D game objects",
+ * GDC 2001; "Collision Detection in Interactive 3D Environments", 2003).
+ *
+ * A polytope P with vertices in D = A - B is grown from the simplex GJK ends
+ * with: each iteration takes the face nearest to the origin, asks for the
+ * support of D in its normal and, if that point lies beyond the face, adds it
+ * (the faces it sees are removed, the horizon is joined to it).
+ *
+ * The depth is certified both ways:
+ * - upper: for any unit n, depth = min_m h_D(m) <= h_D(n) = <n, S_D(n)>;
+ * - lower: if the faces form a closed oriented surface (each edge shared by two
+ *   faces with opposite orientation, kept so by construction) and the origin is
+ *   strictly inside every face's plane, at offset >= L, the origin has a
+ *   positive winding number and the ball of radius L around it meets no face,
+ *   so the ball lies in conv(vertices), inside D up to the vertices' rounding:
+ *   depth >= L. This needs neither exact convexity of P nor exact arithmetic,
+ *   only a rounding allowance on each face's offset (see face_plane).
+ *
+ * No allocation: the polytope lives on the stack (AGJK_EPA_MAX_VERTICES
+ * vertices, twice as many faces); every loop is bounded by it or by the
+ * iteration cap. */
+#include "epa.h"
+
+#define MAX_VERTICES AGJK_EPA_MAX_VERTICES
+#define MAX_FACES (2 * AGJK_EPA_MAX_VERTICES)
+
+typedef struct epa_face {
+    int v[3];     /* vertex indices, counter-clockwise seen from outside */
+    int adj[3];   /* face across edge i, from v[i] to v[(i + 1) % 3] */
+    agjk_vec3 n;  /* unit outward normal */
+    double dist;  /* offset <n, p> of the face's plane */
+    double err;   /* rounding allowance on dist */
+    int alive;
+    int stamp;    /* insertion that last classified the face */
+    int visible;  /* classification of that insertion */
+} epa_face;
+
+typedef struct epa_state {
+    agjk__minkowski *md;
+    agjk__vertex v[MAX_VERTICES];
+    int nv;
+    epa_face f[MAX_FACES];
+    int nf;                 /* face slots in use, alive or free */
+    int free_faces[MAX_FACES];
+    int nfree;
+    int stamp;
+    double upper;           /* min over evaluated unit n of <n, S_D(n)> + dot rounding */
+    agjk_vec3 upper_n;
+    double estimate;        /* <n, S_D(n)> for upper_n */
+    double lower;           /* best certified lower bound (before vertex noise) */
+    agjk__vertex extra[4];  /* blow-up points to add once the tetrahedron stands */
+    int nextra;
+    int support_calls;
+} epa_state;
+
+double agjk__epa_noise(const agjk__minkowski *md) {
+    return 4.0 * DBL_EPSILON * (md->magnitude + v3_maxabs(md->translation));
+}
+
+double agjk__epa_floor(const agjk__minkowski *md) {
+    return 128.0 * DBL_EPSILON * (md->magnitude + v3_maxabs(md->translation));
+}
+
+double agjk__epa_target(int relative, double tolerance, double scale, double s_lo, double s_hi,
+                        double floor) {
+    double lo = fabs(s_lo), hi = fabs(s_hi);
+    double big = lo > hi ? lo : hi;
+    if (relative) {
+        /* The smallest |s| the interval allows (0 when it holds 0). */
+        double small = (s_lo > 0.0 || s_hi < 0.0) ? (lo < hi ? lo : hi) : 0.0;
+        return 0.5 * tolerance * small;
+    }
+    /* What agjk_distance certifies at distance |s| with gap <= tolerance:
+     * min(sqrt(g), g / (2 |s|)); the largest |s| of the interval is the safe one. */
+    double tol = tolerance * scale * scale;
+    double target = sqrt(tol);
+    if (big > 0.0 && tol / (2.0 * big) < target) target = tol / (2.0 * big);
+    return target > floor ? target : floor;
+}
+
+/* Multiplies everything held in solver units by f (the support call lowered
+ * md->scale, see agjk__minkowski_shrink; exact, a power of two). */
+static void follow_rescale(epa_state *st) {
+    double f = st->md->rescaled;
+    if (f == 1.0) return;
+    st->md->rescaled = 1.0;
+    for (int i = 0; i < st->nv; ++i) {
+        st->v[i].w = v3_scale(st->v[i].w, f);
+        st->v[i].a = v3_scale(st->v[i].a, f);
+        st->v[i].b = v3_scale(st->v[i].b, f);
+    }
+    for (int i = 0; i < st->nextra; ++i) {
+        st->extra[i].w = v3_scale(st->extra[i].w, f);
+        st->extra[i].a = v3_scale(st->extra[i].a, f);
+        st->extra[i].b = v3_scale(st->extra[i].b, f);
+    }
+    for (int i = 0; i < st->nf; ++i) {
+        st->f[i].dist *= f;
+        st->f[i].err *= f;
+    }
+    st->upper *= f;
+    st->estimate *= f;
+    st->lower *= f;
+}
+
+/* The point of D farthest along n (n non-zero), and the upper bound it proves. */
+static int support(epa_state *st, agjk_vec3 n, agjk__vertex *s) {
+    agjk__minkowski_support(st->md, v3_neg(n), s); /* argmin <-n, .> */
+    ++st->support_calls;
+    if (st->md->bad_support) return 0;
+    follow_rescale(st);
+    double len = v3_norm(n);
+    if (len > 0.0) {
+        double h = v3_dot(n, s->w) / len;
+        /* Rounding of the dot product and of the division. */
+        double up = h + 8.0 * DBL_EPSILON * v3_norm(s->w);
+        if (up < st->upper) {
+            st->upper = up;
+            st->estimate = h;
+            st->upper_n = v3_scale(n, 1.0 / len);
+        }
+    }
+    return 1;
+}
+
+/* Plane of the triangle p0 p1 p2: unit normal (right hand), offset, and a
+ * rounding allowance on the offset. The computed normal is off the true one by
+ * an angle of a few eps |e1| |e2| / |e1 x e2| (cancellation in the cross
+ * product of the rounded edges), which moves the offset by that times |p|.
+ * Returns 0 for a triangle without a normal. */
+static int face_plane(agjk_vec3 p0, agjk_vec3 p1, agjk_vec3 p2, agjk_vec3 *n, double *dist,
+                      double *err) {
+    agjk_vec3 e1 = v3_sub(p1, p0), e2 = v3_sub(p2, p0);
+    agjk_vec3 c = v3_cross(e1, e2);
+    double len = v3_norm(c);
+    if (!(len > 0.0) || !isfinite(len)) return 0;
+    *n = v3_scale(c, 1.0 / len);
+    *dist = (v3_dot(*n, p0) + v3_dot(*n, p1) + v3_dot(*n, p2)) / 3.0;
+    double r = v3_norm(p0);
+    if (v3_norm(p1) > r) r = v3_norm(p1);
+    if (v3_norm(p2) > r) r = v3_norm(p2);
+    double skew = v3_norm(e1) * v3_norm(e2) / len; /* 1 / sin(angle at p0) */
+    *err = 16.0 * DBL_EPSILON * r * (skew + 1.0);
+    return isfinite(*err) && isfinite(*dist);
+}
+
+static int set_face(epa_state *st, int fi, int a, int b, int c) {
+    epa_face *f = &st->f[fi];
+    f->v[0] = a;
+    f->v[1] = b;
+    f->v[2] = c;
+    f->alive = 1;
+    f->stamp = 0;
+    f->visible = 0;
+    return face_plane(st->v[a].w, st->v[b].w, st->v[c].w, &f->n, &f->dist, &f->err);
+}
+
+/* Whether the point w lies beyond face f, by more than its rounding allowance. */
+static int sees(const epa_face *f, agjk_vec3 w) {
+    return v3_dot(f->n, w) - f->dist > f->err;
+}
+
+/* Distance of p from the affine hull of pts[0..k-1] (k = 1, 2, 3). */
+static double off_hull(const agjk__vertex *pts, int k, agjk_vec3 p) {
+    agjk_vec3 d = v3_sub(p, pts[0].w);
+    if (k == 1) return v3_norm(d);
+    if (k == 2) {
+        agjk_vec3 u = v3_normalize(v3_sub(pts[1].w, pts[0].w));
+        return v3_norm(v3_cross(d, u));
+    }
+    agjk_vec3 n = v3_normalize(v3_cross(v3_sub(pts[1].w, pts[0].w), v3_sub(pts[2].w, pts[0].w)));
+    return fabs(v3_dot(n, d));
+}
+
+/* Directions orthogonal to the affine hull of pts[0..k-1], k = 1, 2, 3. */
+static int hull_normals(const agjk__vertex *pts, int k, agjk_vec3 dirs[3]) {
+    if (k == 1) {
+        dirs[0] = v3(1.0, 0.0, 0.0);
+        dirs[1] = v3(0.0, 1.0, 0.0);
+        dirs[2] = v3(0.0, 0.0, 1.0);
+        return 3;
+    }
+    if (k == 2) {
+        agjk_vec3 u = v3_normalize(v3_sub(pts[1].w, pts[0].w));
+        /* The axis least aligned with u gives a well-conditioned cross product. */
+        agjk_vec3 e = v3(1.0, 0.0, 0.0);
+        if (fabs(u.y) <= fabs(u.x) && fabs(u.y) <= fabs(u.z)) e = v3(0.0, 1.0, 0.0);
+        else if (fabs(u.z) <= fabs(u.x) && fabs(u.z) <= fabs(u.y)) e = v3(0.0, 0.0, 1.0);
+        dirs[0] = v3_normalize(v3_cross(u, e));
+        dirs[1] = v3_cross(u, dirs[0]);
+        return 2;
+    }
+    dirs[0] = v3_normalize(v3_cross(v3_sub(pts[1].w, pts[0].w), v3_sub(pts[2].w, pts[0].w)));
+    return 1;
+}
+
+/* Builds the initial tetrahedron in st->v[0..3] from GJK's simplex, blowing a
+ * point, segment or triangle up by support calls in directions orthogonal to
+ * it (van den Bergen 2003, sec. 4.3.8). Points found on both sides are kept in
+ * st->extra, to be added next. Returns 1 with a tetrahedron, 0 when D is flat
+ * (no volume to rounding) or a support failed. */
+static int blow_up(epa_state *st, const agjk__vertex *simplex, int count, int *flat) {
+    double thr = agjk__epa_floor(st->md);
+    st->nv = 0;
+    *flat = 0;
+    if (count < 1) return 0;
+    for (int i = 0; i < count && st->nv < 4; ++i)
+        if (st->nv == 0 || off_hull(st->v, st->nv, simplex[i].w) > thr) st->v[st->nv++] = simplex[i];
+    while (st->nv < 4) {
+        agjk_vec3 dirs[3];
+        int nd = hull_normals(st->v, st->nv, dirs), added = 0;
+        for (int i = 0; i < nd && !added; ++i) {
+            agjk__vertex plus, minus;
+            if (!support(st, dirs[i], &plus) || !support(st, v3_neg(dirs[i]), &minus)) return 0;
+            thr = agjk__epa_floor(st->md); /* the support calls may have grown the size */
+            double op = off_hull(st->v, st->nv, plus.w), om = off_hull(st->v, st->nv, minus.w);
+            if (op <= thr && om <= thr) continue; /* flat in this direction */
+            const agjk__vertex *best = op >= om ? &plus : &minus;
+            const agjk__vertex *other = op >= om ? &minus : &plus;
+            st->v[st->nv++] = *best;
+            if ((op >= om ? om : op) > thr && st->nextra < 4) st->extra[st->nextra++] = *other;
+            added = 1;
+        }
+        if (!added) {
+            *flat = 1;
+            return 0;
+        }
+    }
+    return 1;
+}
+
+/* Faces of the tetrahedron st->v[0..3], outward, with their adjacency. */
+static int tetrahedron_faces(epa_state *st) {
+    agjk_vec3 p0 = st->v[0].w;
+    double det = v3_dot(v3_cross(v3_sub(st->v[1].w, p0), v3_sub(st->v[2].w, p0)),
+                        v3_sub(st->v[3].w, p0));
+    if (!(det != 0.0) || !isfinite(det)) return 0;
+    if (det < 0.0) { /* make v3 lie above the triangle v0 v1 v2 */
+        agjk__vertex t = st->v[1];
+        st->v[1] = st->v[2];
+        st->v[2] = t;
+    }
+    static const int tri[4][3] = {{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {2, 0, 3}};
+    st->nf = 4;
+    st->nfree = 0;
+    for (int i = 0; i < 4; ++i)
+        if (!set_face(st, i, tri[i][0], tri[i][1], tri[i][2])) return 0;
+    /* Each directed edge u -> v has its twin v -> u in exactly one other face. */
+    for (int i = 0; i < 4; ++i)
+        for (int e = 0; e < 3; ++e) {
+            int u = st->f[i].v[e], v = st->f[i].v[(e + 1) % 3];
+            for (int j = 0; j < 4; ++j)
+                for (int g = 0; j != i && g < 3; ++g)
+                    if (st->f[j].v[g] == v && st->f[j].v[(g + 1) % 3] == u) st->f[i].adj[e] = j;
+        }
+    return 1;
+}
+
+/* Adds s to the polytope, seen from face f0 (sees(f0, s)): removes the faces
+ * that see s (flood fill from f0 across edges) and joins s to the horizon.
+ * Checks everything first; returns 0 with the polytope unchanged when the
+ * store is full or the result would not be a closed surface of proper
+ * triangles (rounding can make the visible region pinched). */
+static int insert(epa_state *st, const agjk__vertex *s, int f0) {
+    int stack[MAX_FACES], visible[MAX_FACES];
+    int hu[MAX_FACES], hv[MAX_FACES], hg[MAX_FACES];
+    int nstack = 0, nvis = 0, nh = 0;
+    if (st->nv >= MAX_VERTICES) return 0;
+    int stamp = ++st->stamp;
+    st->f[f0].stamp = stamp;
+    st->f[f0].visible = 1;
+    stack[nstack++] = f0;
+    while (nstack > 0) {
+        int fi = stack[--nstack];
+        visible[nvis++] = fi;
+        for (int e = 0; e < 3; ++e) {
+            epa_face *g = &st->f[st->f[fi].adj[e]];
+            if (g->stamp != stamp) {
+                g->stamp = stamp;
+                g->visible = sees(g, s->w);
+                if (g->visible) stack[nstack++] = st->f[fi].adj[e];
+            }
+            if (!g->visible) {
+                hu[nh] = st->f[fi].v[e];
+                hv[nh] = st->f[fi].v[(e + 1) % 3];
+                hg[nh] = st->f[fi].adj[e];
+                ++nh;
+            }
+        }
+    }
+    /* The horizon must be one simple cycle: every vertex starts one edge. */
+    for (int i = 0; i < nh; ++i)
+        for (int j = i + 1; j < nh; ++j)
+            if (hu[i] == hu[j]) return 0;
+    int next[MAX_FACES];
+    for (int i = 0; i < nh; ++i) {
+        next[i] = -1;
+        for (int j = 0; j < nh; ++j)
+            if (hu[j] == hv[i]) next[i] = j;
+        if (next[i] < 0) return 0;
+    }
+    if (nh > st->nfree + nvis + (MAX_FACES - st->nf)) return 0;
+    /* The new faces must have normals. */
+    for (int i = 0; i < nh; ++i) {
+        agjk_vec3 n;
+        double d, err;
+        if (!face_plane(st->v[hu[i]].w, st->v[hv[i]].w, s->w, &n, &d, &err)) return 0;
+    }
+    /* Commit. */
+    int si = st->nv;
+    st->v[st->nv++] = *s;
+    for (int i = 0; i < nvis; ++i) {
+        st->f[visible[i]].alive = 0;
+        st->free_faces[st->nfree++] = visible[i];
+    }
+    int slot[MAX_FACES];
+    for (int i = 0; i < nh; ++i) slot[i] = st->nfree > 0 ? st->free_faces[--st->nfree] : st->nf++;
+    for (int i = 0; i < nh; ++i) {
+        int fi = slot[i];
+        set_face(st, fi, hu[i], hv[i], si);
+        epa_face *f = &st->f[fi];
+        f->adj[0] = hg[i];
+        f->adj[1] = slot[next[i]];
+        f->adj[2] = -1;
+        epa_face *g = &st->f[hg[i]];
+        for (int e = 0; e < 3; ++e)
+            if (g->v[e] == hv[i] && g->v[(e + 1) % 3] == hu[i]) g->adj[e] = fi;
+    }
+    for (int i = 0; i < nh; ++i) st->f[slot[next[i]]].adj[2] = slot[i];
+    return 1;
+}
+
+/* The face nearest to the origin, and the certified lower bound the polytope
+ * proves (-inf if it proves none: some face does not have the origin strictly
+ * inside). */
+static int nearest_face(const epa_state *st, double *proved) {
+    int best = -1;
+    double low = INFINITY;
+    for (int i = 0; i < st->nf; ++i) {
+        const epa_face *f = &st->f[i];
+        if (!f->alive) continue;
+        if (best < 0 || f->dist < st->f[best].dist) best = i;
+        if (f->dist - f->err < low) low = f->dist - f->err;
+    }
+    *proved = low > 0.0 ? low : -INFINITY;
+    return best;
+}
+
+/* Whether [lower, upper] (depth, with vertex noise) meets the target. */
+static int width_met(const epa_state *st, const agjk__epa_input *in, double noise,
+                     double floor) {
+    double lo = st->lower - noise, up = st->upper + noise;
+    if (!(up < INFINITY) || !(lo > -INFINITY)) return 0;
+    double margin = in->margin * st->md->scale;
+    double target = agjk__epa_target(in->relative, in->tolerance, st->md->scale, -(up + margin),
+                                     -(lo + margin), in->relative ? 0.0 : floor);
+    return up - lo <= target;
+}
+
+/* Deepest points of the cores from face f: the origin's projection on the
+ * face's plane in barycentric coordinates (clamped onto the triangle). */
+static void face_witness(const epa_state *st, const epa_face *f, agjk__epa_output *out) {
+    agjk_vec3 q = v3_scale(f->n, f->dist);
+    double l[3], sum = 0.0;
+    for (int i = 0; i < 3; ++i) {
+        agjk_vec3 p1 = st->v[f->v[(i + 1) % 3]].w, p2 = st->v[f->v[(i + 2) % 3]].w;
+        l[i] = v3_dot(v3_cross(v3_sub(p1, q), v3_sub(p2, q)), f->n);
+        if (!(l[i] > 0.0)) l[i] = 0.0;
+        sum += l[i];
+    }
+    if (!(sum > 0.0) || !isfinite(sum)) {
+        l[0] = l[1] = l[2] = 1.0;
+        sum = 3.0;
+    }
+    out->a = v3(0.0, 0.0, 0.0);
+    out->b = v3(0.0, 0.0, 0.0);
+    for (int i = 0; i < 3; ++i) {
+        out->a = v3_add(out->a, v3_scale(st->v[f->v[i]].a, l[i] / sum));
+        out->b = v3_add(out->b, v3_scale(st->v[f->v[i]].b, l[i] / sum));
+    }
+    out->has_witness = 1;
+}
+
+void agjk__epa(agjk__minkowski *md, const agjk__epa_input *in, agjk__epa_output *out) {
+    epa_state st;
+    st.md = md;
+    st.nv = 0;
+    st.nf = 0;
+    st.nfree = 0;
+    st.stamp = 0;
+    st.upper = INFINITY;
+    st.estimate = INFINITY;
+    st.upper_n = v3(0.0, 0.0, 0.0);
+    st.lower = -in->core_distance_upper; /* GJK's bound: depth >= -distance */
+    st.nextra = 0;
+    st.support_calls = 0;
+    out->has_witness = 0;
+    out->iterations = 0;
+    out->converged = 0;
+
+    int flat = 0;
+    int ok = blow_up(&st, in->simplex, in->count, &flat) && tetrahedron_faces(&st);
+    if (md->bad_support) {
+        out->outcome = AGJK__EPA_BAD_SUPPORT;
+    } else if (!ok) {
+        out->outcome = flat ? AGJK__EPA_FLAT : AGJK__EPA_DEGENERATE;
+    } else {
+        for (int i = 0; i < st.nextra; ++i)
+            for (int fi = 0; fi < st.nf; ++fi)
+                if (st.f[fi].alive && sees(&st.f[fi], st.extra[i].w)) {
+                    insert(&st, &st.extra[i], fi);
+                    break;
+                }
+        out->outcome = AGJK__EPA_CAP;
+        int best = -1;
+        for (int k = 0;; ++k) {
+            double proved;
+            best = nearest_face(&st, &proved);
+            if (proved > st.lower) st.lower = proved;
+            if (width_met(&st, in, agjk__epa_noise(md), agjk__epa_floor(md))) {
+                out->outcome = AGJK__EPA_CONVERGED;
+                break;
+            }
+            if (k >= in->max_iterations) break;
+            const epa_face *f = &st.f[best];
+            agjk__vertex s;
+            ++out->iterations;
+            if (!support(&st, f->n, &s)) {
+                out->outcome = AGJK__EPA_BAD_SUPPORT;
+                break;
+            }
+            f = &st.f[best]; /* (dist may have been rescaled) */
+            if (!sees(f, s.w)) {
+                /* The face lies on D's boundary to rounding: the bounds are as
+                 * tight as this polytope can make them. */
+                out->outcome = width_met(&st, in, agjk__epa_noise(md), agjk__epa_floor(md))
+                                   ? AGJK__EPA_CONVERGED : AGJK__EPA_NO_PROGRESS;
+                break;
+            }
+            if (st.nv >= MAX_VERTICES) {
+                out->outcome = AGJK__EPA_FULL;
+                break;
+            }
+            if (!insert(&st, &s, best)) {
+                out->outcome = AGJK__EPA_DEGENERATE;
+                break;
+            }
+        }
+        if (best >= 0) face_witness(&st, &st.f[best], out);
+        if (!(st.upper < INFINITY) && best >= 0) {
+            /* No support value yet (cap before the first call): take one. */
+            agjk__vertex s;
+            if (!support(&st, st.f[best].n, &s)) out->outcome = AGJK__EPA_BAD_SUPPORT;
+        }
+    }
+    double noise = agjk__epa_noise(md);
+    out->upper = st.upper + noise;
+    out->lower = st.lower - noise;
+    if (out->upper < out->lower) out->upper = out->lower; /* both within rounding */
+    out->estimate = st.estimate;
+    if (out->estimate > out->upper) out->estimate = out->upper;
+    if (out->estimate < out->lower) out->estimate = out->lower;
+    out->normal = st.upper_n;
+    out->converged = out->outcome != AGJK__EPA_BAD_SUPPORT &&
+                     width_met(&st, in, noise, agjk__epa_floor(md));
+    if (out->converged && out->outcome != AGJK__EPA_FLAT) out->outcome = AGJK__EPA_CONVERGED;
+    out->support_calls = st.support_calls;
+}
