@@ -60,7 +60,9 @@ double agjk__epa_noise(const agjk__minkowski *md) {
 }
 
 double agjk__epa_floor(const agjk__minkowski *md) {
-    return 128.0 * DBL_EPSILON * (md->magnitude + v3_maxabs(md->translation));
+    /* Vertex noise on both bounds, and face offsets with their rounding
+     * allowance (larger on thin triangles). */
+    return 1024.0 * DBL_EPSILON * (md->magnitude + v3_maxabs(md->translation));
 }
 
 double agjk__epa_target(int relative, double tolerance, double scale, double s_lo, double s_hi,
@@ -359,14 +361,43 @@ static int width_met(const epa_state *st, const agjk__epa_input *in, double nois
     return up - lo <= target;
 }
 
-/* Deepest points of the cores from face f: the origin's projection on the
- * face's plane in barycentric coordinates (clamped onto the triangle). */
-static void face_witness(const epa_state *st, const epa_face *f, agjk__epa_output *out) {
+/* Barycentric coordinates (unnormalised, l[i] opposite vertex i) of the
+ * origin's projection on face f's plane; returns how far outside the
+ * triangle it falls (0 inside), relative to the triangle's size. */
+static double foot_weights(const epa_state *st, const epa_face *f, double l[3]) {
     agjk_vec3 q = v3_scale(f->n, f->dist);
-    double l[3], sum = 0.0;
+    double sum = 0.0, worst = 0.0;
     for (int i = 0; i < 3; ++i) {
         agjk_vec3 p1 = st->v[f->v[(i + 1) % 3]].w, p2 = st->v[f->v[(i + 2) % 3]].w;
         l[i] = v3_dot(v3_cross(v3_sub(p1, q), v3_sub(p2, q)), f->n);
+        sum += fabs(l[i]);
+        if (l[i] < worst) worst = l[i];
+    }
+    return sum > 0.0 ? -worst / sum : INFINITY;
+}
+
+/* Deepest points of the cores: the origin's projection on the nearest face's
+ * plane, in barycentric coordinates. A facet of D made of several coplanar
+ * triangles (boxes) may have its nearest triangle, by rounding, not the one
+ * holding the projection: among the faces no farther than the upper bound,
+ * the one holding its projection best is taken (clamped onto it). */
+static void face_witness(const epa_state *st, int best, agjk__epa_output *out) {
+    double l[3];
+    double outside = foot_weights(st, &st->f[best], l);
+    for (int i = 0; i < st->nf && outside > 0.0; ++i) {
+        const epa_face *f = &st->f[i];
+        if (!f->alive || i == best || f->dist > st->upper) continue;
+        double m[3];
+        double o = foot_weights(st, f, m);
+        if (o < outside) {
+            outside = o;
+            best = i;
+        }
+    }
+    const epa_face *f = &st->f[best];
+    foot_weights(st, f, l);
+    double sum = 0.0;
+    for (int i = 0; i < 3; ++i) {
         if (!(l[i] > 0.0)) l[i] = 0.0;
         sum += l[i];
     }
@@ -448,7 +479,7 @@ void agjk__epa(agjk__minkowski *md, const agjk__epa_input *in, agjk__epa_output 
                 break;
             }
         }
-        if (best >= 0) face_witness(&st, &st.f[best], out);
+        if (best >= 0) face_witness(&st, best, out);
         if (!(st.upper < INFINITY) && best >= 0) {
             /* No support value yet (cap before the first call): take one. */
             agjk__vertex s;

@@ -66,6 +66,28 @@ static agjk_status finish(agjk_signed_result *r, int converged) {
     return r->status = AGJK_STATUS_CONTACT_WITHIN_TOLERANCE;
 }
 
+/* The answer when the cores are certified disjoint: the GJK distance, minus
+ * the margins (as agjk_distance, with the margins subtracted). */
+static agjk_status separated_cores(agjk_signed_result *result, const gjk_summary *g,
+                                   const agjk__minkowski *md, const agjk_pose *pose_a,
+                                   double margin_a, double margin_b, double margin, int witness,
+                                   int converged) {
+    double inv = 1.0 / md->scale;
+    double core = v3_norm(g->x);
+    result->signed_distance = core * inv - margin;
+    result->upper = g->core_upper * inv - margin;
+    result->lower = g->core_lower * inv - margin;
+    result->hint_a = md->hint_a;
+    result->hint_b = md->hint_b;
+    agjk_vec3 n = v3_normalize(v3_neg(g->x));
+    result->normal = m3_mul(&pose_a->rotation[0][0], n);
+    if (witness) {
+        result->witness_a = to_world(pose_a, v3_add(v3_scale(g->a, inv), v3_scale(n, margin_a)));
+        result->witness_b = to_world(pose_a, v3_sub(v3_scale(g->b, inv), v3_scale(n, margin_b)));
+    }
+    return finish(result, converged);
+}
+
 agjk_status agjk_signed_distance(const agjk_shape *a, const agjk_pose *pose_a,
                                  const agjk_shape *b, const agjk_pose *pose_b,
                                  const agjk_options *options, agjk_signed_result *result) {
@@ -93,27 +115,28 @@ agjk_status agjk_signed_distance(const agjk_shape *a, const agjk_pose *pose_a,
     result->hint_b = md.hint_b;
     if (g.bad_support) return result->status;
 
-    if (!g.intersecting && g.core_lower > 0.0) {
-        /* Cores certified disjoint: the GJK distance, minus the margins. */
-        double inv = 1.0 / md.scale;
-        double core = v3_norm(g.x);
-        result->signed_distance = core * inv - margin;
-        result->upper = g.core_upper * inv - margin;
-        result->lower = g.core_lower * inv - margin;
-        agjk_vec3 n = v3_normalize(v3_neg(g.x));
-        result->normal = m3_mul(&pose_a->rotation[0][0], n);
-        if (witness) {
-            result->witness_a = to_world(pose_a, v3_add(v3_scale(g.a, inv), v3_scale(n, margin_a)));
-            result->witness_b = to_world(pose_a, v3_sub(v3_scale(g.b, inv), v3_scale(n, margin_b)));
-        }
-        int converged = g.converged;
-        if (converged && in.relative && margin > 0.0) {
-            /* The relative tolerance applies to the distance with margins. */
-            double target = agjk__epa_target(1, opts.tolerance, md.scale,
-                                             result->lower * md.scale, result->upper * md.scale, 0.0);
-            converged = (result->upper - result->lower) * md.scale <= target;
-        }
-        return finish(result, converged);
+    /* Cores certified disjoint: the GJK distance minus the margins. GJK's
+     * tolerance bounds the error relative to the core distance; with margins
+     * |signed distance| may be larger (deep overlap of the margins), so the
+     * width is checked against the signed distance and GJK resumed from its
+     * last iterate with a proportionally tighter tolerance (twice at most). */
+    for (int round = 0; !g.intersecting && g.core_lower > 0.0; ++round) {
+        double lo = g.core_lower - margin * md.scale, hi = g.core_upper - margin * md.scale;
+        double target = agjk__epa_target(in.relative, opts.tolerance, md.scale, lo, hi,
+                                         in.relative ? 0.0 : agjk__epa_floor(&md));
+        /* Without margins, exactly agjk_distance's verdict; with margins, the
+         * certified width decides. */
+        int converged = margin == 0.0 ? g.converged : hi - lo <= target;
+        if (converged || margin == 0.0 || round == 2)
+            return separated_cores(result, &g, &md, pose_a, margin_a, margin_b, margin, witness,
+                                   converged);
+        in.tolerance *= 0.25 * target / (hi - lo);
+        if (!(in.tolerance > 0.0)) in.tolerance = DBL_MIN;
+        in.x0 = g.x; /* solver units: the scale is already set */
+        run_gjk(&md, &in, &out, &g);
+        result->gjk_iterations += g.iterations;
+        result->support_calls += g.support_calls;
+        if (g.bad_support) return result->status;
     }
 
     /* The cores overlap or touch: EPA from GJK's simplex. */

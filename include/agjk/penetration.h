@@ -92,7 +92,7 @@ typedef struct agjk_signed_result {
  *   width <= min(sqrt(tolerance), tolerance / (2 |signed_distance|)), the error
  *   agjk_distance certifies at that distance with that gap. The default 1e-8
  *   gives about 5e-7 at a depth of 0.01, 5e-8 at a depth of 0.1. A tolerance
- *   below the floating-point floor (about 100 ulps of the problem's size) is
+ *   below the floating-point floor (about 1000 ulps of the problem's size) is
  *   raised to it.
  * - AGJK_TOLERANCE_RELATIVE (dimensionless): width <= tolerance / 2 *
  *   |signed_distance|; when double precision cannot reach it the status is
