@@ -25,10 +25,13 @@
 
 #define MAX_VERTICES AGJK_EPA_MAX_VERTICES
 #define MAX_FACES (2 * AGJK_EPA_MAX_VERTICES)
+#define HEAP_CAPACITY (2 * MAX_FACES)
 
 typedef struct epa_face {
     int v[3];     /* vertex indices, counter-clockwise seen from outside */
     int adj[3];   /* face across edge i, from v[i] to v[(i + 1) % 3] */
+    int adje[3];  /* index of that edge in face adj[i] */
+    int gen;      /* bumped when the slot gets a new face (stale heap entries) */
     agjk_vec3 n;  /* unit outward normal */
     double dist;  /* offset <n, p> of the face's plane */
     double err;   /* rounding allowance on dist */
@@ -42,6 +45,12 @@ typedef struct epa_state {
     agjk__vertex v[MAX_VERTICES];
     int nv;
     epa_face f[MAX_FACES];
+    /* Faces by dist - err (the lower bound each proves), a binary min-heap
+     * with lazy deletion: entries of dead or reused slots are dropped when
+     * they reach the top. */
+    struct { double dist; int face, gen; } heap[HEAP_CAPACITY];
+    int nheap;
+    int start_of[MAX_VERTICES]; /* insert's scratch: horizon edge starting at a vertex, or -1 */
     int nf;                 /* face slots in use, alive or free */
     int free_faces[MAX_FACES];
     int nfree;
@@ -102,6 +111,7 @@ static void follow_rescale(epa_state *st) {
         st->f[i].dist *= f;
         st->f[i].err *= f;
     }
+    for (int i = 0; i < st->nheap; ++i) st->heap[i].dist *= f;
     st->upper *= f;
     st->estimate *= f;
     st->lower *= f;
@@ -136,27 +146,73 @@ static int face_plane(agjk_vec3 p0, agjk_vec3 p1, agjk_vec3 p2, agjk_vec3 *n, do
                       double *err) {
     agjk_vec3 e1 = v3_sub(p1, p0), e2 = v3_sub(p2, p0);
     agjk_vec3 c = v3_cross(e1, e2);
-    double len = v3_norm(c);
-    if (!(len > 0.0) || !isfinite(len)) return 0;
+    double len2 = v3_norm2(c);
+    if (!(len2 > 0.0) || !isfinite(len2)) return 0;
+    double len = sqrt(len2);
     *n = v3_scale(c, 1.0 / len);
-    *dist = (v3_dot(*n, p0) + v3_dot(*n, p1) + v3_dot(*n, p2)) / 3.0;
-    double r = v3_norm(p0);
-    if (v3_norm(p1) > r) r = v3_norm(p1);
-    if (v3_norm(p2) > r) r = v3_norm(p2);
-    double skew = v3_norm(e1) * v3_norm(e2) / len; /* 1 / sin(angle at p0) */
-    *err = 16.0 * DBL_EPSILON * r * (skew + 1.0);
+    *dist = v3_dot(*n, p0);
+    /* |p| <= sqrt(3) max |p_i|; 1 / sin(angle at p0) = |e1| |e2| / |c|
+     * <= (|e1|^2 + |e2|^2) / (2 |c|). */
+    double r = v3_maxabs(p0);
+    if (v3_maxabs(p1) > r) r = v3_maxabs(p1);
+    if (v3_maxabs(p2) > r) r = v3_maxabs(p2);
+    double skew = (v3_norm2(e1) + v3_norm2(e2)) / (2.0 * len);
+    *err = 32.0 * DBL_EPSILON * r * (skew + 1.0);
     return isfinite(*err) && isfinite(*dist);
 }
 
-static int set_face(epa_state *st, int fi, int a, int b, int c) {
+static void heap_push(epa_state *st, double dist, int face, int gen) {
+    int i = st->nheap++;
+    while (i > 0 && st->heap[(i - 1) / 2].dist > dist) {
+        st->heap[i] = st->heap[(i - 1) / 2];
+        i = (i - 1) / 2;
+    }
+    st->heap[i].dist = dist;
+    st->heap[i].face = face;
+    st->heap[i].gen = gen;
+}
+
+static void heap_pop(epa_state *st) {
+    int n = --st->nheap, i = 0;
+    if (n == 0) return;
+    double d = st->heap[n].dist;
+    for (;;) {
+        int c = 2 * i + 1;
+        if (c >= n) break;
+        if (c + 1 < n && st->heap[c + 1].dist < st->heap[c].dist) ++c;
+        if (st->heap[c].dist >= d) break;
+        st->heap[i] = st->heap[c];
+        i = c;
+    }
+    st->heap[i] = st->heap[n];
+}
+
+/* Records face fi in the heap; when the heap is full of stale entries,
+ * rebuilds it from the live faces (at most MAX_FACES < HEAP_CAPACITY). */
+static void heap_add(epa_state *st, int fi) {
+    if (st->nheap == HEAP_CAPACITY) {
+        st->nheap = 0;
+        for (int i = 0; i < st->nf; ++i)
+            if (st->f[i].alive && i != fi)
+                heap_push(st, st->f[i].dist - st->f[i].err, i, st->f[i].gen);
+    }
+    heap_push(st, st->f[fi].dist - st->f[fi].err, fi, st->f[fi].gen);
+}
+
+static void set_face(epa_state *st, int fi, int a, int b, int c, agjk_vec3 n, double dist,
+                     double err) {
     epa_face *f = &st->f[fi];
     f->v[0] = a;
     f->v[1] = b;
     f->v[2] = c;
+    f->n = n;
+    f->dist = dist;
+    f->err = err;
     f->alive = 1;
     f->stamp = 0;
     f->visible = 0;
-    return face_plane(st->v[a].w, st->v[b].w, st->v[c].w, &f->n, &f->dist, &f->err);
+    ++f->gen;
+    heap_add(st, fi);
 }
 
 /* Whether the point w lies beyond face f, by more than its rounding allowance. */
@@ -244,19 +300,26 @@ static int tetrahedron_faces(epa_state *st) {
         st->v[1] = st->v[2];
         st->v[2] = t;
     }
+    /* Face i holds the edges tri[i][e] -> tri[i][e + 1]; adj[i][e] is the face
+     * holding the same edge reversed. */
     static const int tri[4][3] = {{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {2, 0, 3}};
+    static const int adj[4][3] = {{3, 2, 1}, {0, 2, 3}, {0, 3, 1}, {0, 1, 2}};
+    static const int adje[4][3] = {{0, 0, 0}, {2, 2, 1}, {1, 2, 1}, {0, 2, 1}};
     st->nf = 4;
     st->nfree = 0;
-    for (int i = 0; i < 4; ++i)
-        if (!set_face(st, i, tri[i][0], tri[i][1], tri[i][2])) return 0;
-    /* Each directed edge u -> v has its twin v -> u in exactly one other face. */
-    for (int i = 0; i < 4; ++i)
+    st->nheap = 0;
+    for (int i = 0; i < 4; ++i) st->f[i].gen = 0;
+    for (int i = 0; i < 4; ++i) {
+        agjk_vec3 n;
+        double d, err;
+        if (!face_plane(st->v[tri[i][0]].w, st->v[tri[i][1]].w, st->v[tri[i][2]].w, &n, &d, &err))
+            return 0;
+        set_face(st, i, tri[i][0], tri[i][1], tri[i][2], n, d, err);
         for (int e = 0; e < 3; ++e) {
-            int u = st->f[i].v[e], v = st->f[i].v[(e + 1) % 3];
-            for (int j = 0; j < 4; ++j)
-                for (int g = 0; j != i && g < 3; ++g)
-                    if (st->f[j].v[g] == v && st->f[j].v[(g + 1) % 3] == u) st->f[i].adj[e] = j;
+            st->f[i].adj[e] = adj[i][e];
+            st->f[i].adje[e] = adje[i][e];
         }
+    }
     return 1;
 }
 
@@ -267,7 +330,7 @@ static int tetrahedron_faces(epa_state *st) {
  * triangles (rounding can make the visible region pinched). */
 static int insert(epa_state *st, const agjk__vertex *s, int f0) {
     int stack[MAX_FACES], visible[MAX_FACES];
-    int hu[MAX_FACES], hv[MAX_FACES], hg[MAX_FACES];
+    int hu[MAX_FACES], hv[MAX_FACES], hg[MAX_FACES], hj[MAX_FACES];
     int nstack = 0, nvis = 0, nh = 0;
     if (st->nv >= MAX_VERTICES) return 0;
     int stamp = ++st->stamp;
@@ -288,28 +351,29 @@ static int insert(epa_state *st, const agjk__vertex *s, int f0) {
                 hu[nh] = st->f[fi].v[e];
                 hv[nh] = st->f[fi].v[(e + 1) % 3];
                 hg[nh] = st->f[fi].adj[e];
+                hj[nh] = st->f[fi].adje[e];
                 ++nh;
             }
         }
     }
     /* The horizon must be one simple cycle: every vertex starts one edge. */
-    for (int i = 0; i < nh; ++i)
-        for (int j = i + 1; j < nh; ++j)
-            if (hu[i] == hu[j]) return 0;
-    int next[MAX_FACES];
-    for (int i = 0; i < nh; ++i) {
-        next[i] = -1;
-        for (int j = 0; j < nh; ++j)
-            if (hu[j] == hv[i]) next[i] = j;
-        if (next[i] < 0) return 0;
+    int next[MAX_FACES], simple = 1;
+    for (int i = 0; i < nh && simple; ++i) {
+        if (st->start_of[hu[i]] >= 0) simple = 0;
+        else st->start_of[hu[i]] = i;
     }
+    for (int i = 0; i < nh && simple; ++i) {
+        next[i] = st->start_of[hv[i]];
+        if (next[i] < 0) simple = 0;
+    }
+    for (int i = 0; i < nh; ++i) st->start_of[hu[i]] = -1;
+    if (!simple) return 0;
     if (nh > st->nfree + nvis + (MAX_FACES - st->nf)) return 0;
     /* The new faces must have normals. */
-    for (int i = 0; i < nh; ++i) {
-        agjk_vec3 n;
-        double d, err;
-        if (!face_plane(st->v[hu[i]].w, st->v[hv[i]].w, s->w, &n, &d, &err)) return 0;
-    }
+    agjk_vec3 hn[MAX_FACES];
+    double hd[MAX_FACES], he[MAX_FACES];
+    for (int i = 0; i < nh; ++i)
+        if (!face_plane(st->v[hu[i]].w, st->v[hv[i]].w, s->w, &hn[i], &hd[i], &he[i])) return 0;
     /* Commit. */
     int si = st->nv;
     st->v[st->nv++] = *s;
@@ -318,36 +382,46 @@ static int insert(epa_state *st, const agjk__vertex *s, int f0) {
         st->free_faces[st->nfree++] = visible[i];
     }
     int slot[MAX_FACES];
-    for (int i = 0; i < nh; ++i) slot[i] = st->nfree > 0 ? st->free_faces[--st->nfree] : st->nf++;
+    for (int i = 0; i < nh; ++i) {
+        if (st->nfree > 0) {
+            slot[i] = st->free_faces[--st->nfree];
+        } else {
+            slot[i] = st->nf++;
+            st->f[slot[i]].gen = 0;
+        }
+    }
     for (int i = 0; i < nh; ++i) {
         int fi = slot[i];
-        set_face(st, fi, hu[i], hv[i], si);
+        set_face(st, fi, hu[i], hv[i], si, hn[i], hd[i], he[i]);
         epa_face *f = &st->f[fi];
         f->adj[0] = hg[i];
+        f->adje[0] = hj[i];
         f->adj[1] = slot[next[i]];
-        f->adj[2] = -1;
-        epa_face *g = &st->f[hg[i]];
-        for (int e = 0; e < 3; ++e)
-            if (g->v[e] == hv[i] && g->v[(e + 1) % 3] == hu[i]) g->adj[e] = fi;
+        f->adje[1] = 2;
+        f->adje[2] = 1;
+        st->f[hg[i]].adj[hj[i]] = fi;
+        st->f[hg[i]].adje[hj[i]] = 0;
     }
     for (int i = 0; i < nh; ++i) st->f[slot[next[i]]].adj[2] = slot[i];
     return 1;
 }
 
-/* The face nearest to the origin, and the certified lower bound the polytope
- * proves (-inf if it proves none: some face does not have the origin strictly
- * inside). */
-static int nearest_face(const epa_state *st, double *proved) {
-    int best = -1;
-    double low = INFINITY;
-    for (int i = 0; i < st->nf; ++i) {
-        const epa_face *f = &st->f[i];
-        if (!f->alive) continue;
-        if (best < 0 || f->dist < st->f[best].dist) best = i;
-        if (f->dist - f->err < low) low = f->dist - f->err;
+/* The face whose plane is nearest to the origin (after its rounding
+ * allowance): EPA expands it. Also the certified lower bound the polytope
+ * proves, min over faces of dist - err, or -inf if it proves none (some face
+ * may not have the origin strictly inside). */
+static int nearest_face(epa_state *st, double *proved) {
+    while (st->nheap > 0) {
+        int fi = st->heap[0].face;
+        if (st->f[fi].alive && st->f[fi].gen == st->heap[0].gen) {
+            double low = st->heap[0].dist;
+            *proved = low > 0.0 ? low : -INFINITY;
+            return fi;
+        }
+        heap_pop(st);
     }
-    *proved = low > 0.0 ? low : -INFINITY;
-    return best;
+    *proved = -INFINITY; /* not reached: a closed surface has faces */
+    return 0;
 }
 
 /* Whether [lower, upper] (depth, with vertex noise) meets the target. */
@@ -427,6 +501,7 @@ void agjk__epa(agjk__minkowski *md, const agjk__epa_input *in, agjk__epa_output 
     st.lower = -in->core_distance_upper; /* GJK's bound: depth >= -distance */
     st.nextra = 0;
     st.support_calls = 0;
+    for (int i = 0; i < MAX_VERTICES; ++i) st.start_of[i] = -1;
     out->has_witness = 0;
     out->iterations = 0;
     out->converged = 0;

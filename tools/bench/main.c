@@ -9,6 +9,7 @@
 
 #include "bench.h"
 #include "ccd_adapter.h"
+#include "depth_bench.h"
 #include "guard.h"
 #include "hull_support.h"
 #include "mesh_io.h"
@@ -32,6 +33,8 @@ static void usage(FILE *f) {
         "  --wp-pairs K      pairs in the work-precision run (default 20; 0 disables)\n"
         "  --wp-reps R       repetitions in the work-precision run (default 10)\n"
         "  --ccd-reps R      repetitions in the libccd timing (default 50; 0 disables it)\n"
+        "  --depth-reps R    repetitions in the penetration-depth comparison with libccd\n"
+        "                    (default 20; 0 disables it)\n"
         "  --tolerance T     duality-gap tolerance of the tables (default 1e-8)\n"
         "  --relative        read tolerances as relative (AGJK_TOLERANCE_RELATIVE: g <= T ||x||^2)\n"
         "                    for agjk's methods; default absolute, as in the paper\n"
@@ -62,6 +65,7 @@ static int parse(int argc, char **argv, bench_config *c) {
     c->wp_pairs = 20;
     c->wp_reps = 10;
     c->ccd_reps = 50;
+    c->depth_reps = 20;
     c->max_meshes = 1000;
     c->tolerance = 1e-8;
     c->mesh_scale = 0.1;
@@ -80,6 +84,7 @@ static int parse(int argc, char **argv, bench_config *c) {
         INT_OPT("--wp-pairs", wp_pairs)
         INT_OPT("--wp-reps", wp_reps)
         INT_OPT("--ccd-reps", ccd_reps)
+        INT_OPT("--depth-reps", depth_reps)
         INT_OPT("--max-meshes", max_meshes)
 #undef INT_OPT
         if (strcmp(a, "--relative") == 0) { c->relative = 1; continue; }
@@ -102,6 +107,7 @@ static int parse(int argc, char **argv, bench_config *c) {
             c->wp_pairs = 4;
             c->wp_reps = 3;
             c->ccd_reps = 5;
+            c->depth_reps = 3;
             c->max_meshes = 100;
             continue;
         }
@@ -260,7 +266,7 @@ int main(int argc, char **argv) {
     bench_record *recs;
     ccd_bench_record *ccd_recs = NULL;
     unsigned char *ccd_outcome = NULL;
-    int h, cap_problems, cap_shapes;
+    int h, cap_problems, cap_shapes, depth_missed = 0;
     double t0, t_all = bench_now_ns();
     static char command[1024];
     char mesh_note[256] = "";
@@ -370,6 +376,12 @@ int main(int argc, char **argv) {
         rep.ccd_count = set.problem_count;
     }
 
+    if (cfg.depth_reps > 0 && bench_ccd_check() == 0) {
+        depth_bench_options dopt = {cfg.depth_reps, cfg.max_iterations, cfg.tolerance, 10.0,
+                                    cfg.out_dir};
+        depth_missed = depth_bench_run(&set, &dopt); /* intervals missing the reference */
+    }
+
     {
         /* What an empty timed region costs: included in every time reported. */
         double t[1000];
@@ -402,6 +414,6 @@ int main(int argc, char **argv) {
         free(ccd_outcome);
         bench_free_meshes(&meshes);
         bench_set_free(&set);
-        return viol || wrong ? 1 : 0;
+        return viol || wrong || depth_missed ? 1 : 0;
     }
 }
