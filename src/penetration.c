@@ -59,6 +59,12 @@ static void run_gjk(agjk__minkowski *md, agjk__solve_input *in, agjk__solve_outp
     g->core_upper = core + out->noise;
 }
 
+/* A support callback returned a bad point: nothing computed, a zeroed result. */
+static agjk_status invalid(agjk_signed_result *r) {
+    memset(r, 0, sizeof *r);
+    return r->status = AGJK_STATUS_INVALID_INPUT;
+}
+
 static agjk_status finish(agjk_signed_result *r, int converged) {
     if (!converged) return r->status = AGJK_STATUS_NOT_CONVERGED;
     if (r->lower > 0.0) return r->status = AGJK_STATUS_SEPARATED;
@@ -113,7 +119,7 @@ agjk_status agjk_signed_distance(const agjk_shape *a, const agjk_pose *pose_a,
     result->support_calls = g.support_calls;
     result->hint_a = md.hint_a;
     result->hint_b = md.hint_b;
-    if (g.bad_support) return result->status;
+    if (g.bad_support) return invalid(result);
 
     /* Cores certified disjoint: the GJK distance minus the margins. GJK's
      * tolerance bounds the error relative to the core distance; with margins
@@ -136,7 +142,7 @@ agjk_status agjk_signed_distance(const agjk_shape *a, const agjk_pose *pose_a,
         run_gjk(&md, &in, &out, &g);
         result->gjk_iterations += g.iterations;
         result->support_calls += g.support_calls;
-        if (g.bad_support) return result->status;
+        if (g.bad_support) return invalid(result);
     }
 
     /* The cores overlap or touch: EPA from GJK's simplex. */
@@ -154,10 +160,7 @@ agjk_status agjk_signed_distance(const agjk_shape *a, const agjk_pose *pose_a,
     result->support_calls += eout.support_calls;
     result->hint_a = md.hint_a;
     result->hint_b = md.hint_b;
-    if (eout.outcome == AGJK__EPA_BAD_SUPPORT) {
-        memset(result, 0, sizeof *result);
-        return result->status = AGJK_STATUS_INVALID_INPUT;
-    }
+    if (eout.outcome == AGJK__EPA_BAD_SUPPORT) return invalid(result);
     double inv = 1.0 / md.scale; /* EPA may have lowered the scale */
     result->lower = -eout.upper * inv - margin;
     result->upper = -eout.lower * inv - margin;
