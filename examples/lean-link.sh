@@ -1,10 +1,11 @@
 #!/bin/sh
 # "Leave out what a scene does not need": a program using only spheres and
 # boxes, linked statically with --gc-sections, must contain no polytope, hull,
-# adjacency, ellipsoid, cylinder or cone code. Prints its text size.
+# adjacency, ellipsoid, cylinder or cone code, and no penetration depth (EPA)
+# code. Prints its text size.
 set -eu
 bin=${1:-out/examples/spheres_and_boxes}
-unwanted=$(nm "$bin" | grep -i -E 'polytope|adjacency|hull|ellipsoid|cylinder|cone_|capsule|segment_support|(^| |_)epa' || true)
+unwanted=$(nm "$bin" | grep -i -E 'polytope|adjacency|hull|ellipsoid|cylinder|cone_|capsule|segment_support|(^| |_)epa|signed_distance|penetration' || true)
 if [ -n "$unwanted" ]; then
     echo "lean link: unexpected symbols in $bin:" >&2
     echo "$unwanted" >&2
