@@ -494,6 +494,7 @@ void agjk__epa(agjk__minkowski *md, const agjk__epa_input *in, agjk__epa_output 
     st.nv = 0;
     st.nf = 0;
     st.nfree = 0;
+    st.nheap = 0;
     st.stamp = 0;
     st.upper = INFINITY;
     st.estimate = INFINITY;
