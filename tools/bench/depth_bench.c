@@ -33,7 +33,9 @@ typedef struct ctx {
 static volatile double sink;
 
 static const char *column_name(int c) {
-    static const char *const names[DB_COUNT] = {"agjk EPA (certified)", "libccd GJK+EPA, default",
+    static const char *const names[DB_COUNT] = {"agjk EPA (certified)",
+                                                "agjk EPA, width <= 1e-4 x scale",
+                                                "libccd GJK+EPA, default",
                                                 "libccd GJK+EPA, tight", "libccd MPR"};
     return names[c];
 }
@@ -65,12 +67,17 @@ static void run_case(void *vctx, int index, void *record) {
     for (int col = 0; col < DB_COUNT; ++col) {
         double value = 0;
         int result = OK;
-        if (col == DB_AGJK) {
+        if (col == DB_AGJK || col == DB_AGJK_1E4) {
             agjk_options opt = agjk_default_options();
             agjk_signed_result r;
             opt.method = ccd_bench_accel_method(p->family);
             opt.max_iterations = c->o->max_iterations;
             opt.tolerance = tol;
+            if (col == DB_AGJK_1E4) {
+                /* width <= tolerance / 2 x depth = 1e-4 x scale */
+                opt.tolerance_mode = AGJK_TOLERANCE_RELATIVE;
+                opt.tolerance = fmin(1.0, 2e-4 * p->scale / fmax(-rec->ref_hi, 1e-300));
+            }
             for (int k = 0; k < reps; ++k) {
                 double t0 = bench_now_ns();
                 agjk_signed_distance(&a->shape, &p->pose_a, &b->shape, &p->pose_b, &opt, &r);
@@ -78,9 +85,11 @@ static void run_case(void *vctx, int index, void *record) {
                 sink = r.signed_distance;
             }
             value = r.signed_distance;
-            rec->lower = r.lower;
-            rec->upper = r.upper;
-            rec->epa_iterations = r.epa_iterations;
+            if (col == DB_AGJK) {
+                rec->lower = r.lower;
+                rec->upper = r.upper;
+                rec->epa_iterations = r.epa_iterations;
+            }
             if (!isfinite(r.signed_distance) || !isfinite(r.lower) || !isfinite(r.upper))
                 result = NAN_ANSWER;
             else if (r.status == AGJK_STATUS_NOT_CONVERGED || r.status == AGJK_STATUS_INVALID_INPUT)
@@ -170,7 +179,9 @@ int depth_bench_run(const bench_set *set, const depth_bench_options *o) {
                    "Overlapping problems of the benchmark (signed distances -0.1 ... -1e-4 x scale),\n"
                    "reference: branch and bound over the sphere of directions in long double\n"
                    "(bracket <= 1e-12 x size). agjk: tolerance %g x scale^2 (absolute);\n"
-                   "libccd tight: epa_tolerance = the width agjk certifies at that depth.\n"
+                   "agjk 1e-4: asked for libccd's default accuracy, an interval of width\n"
+                   "<= 1e-4 x scale; libccd default: epa_tolerance 1e-4; libccd tight:\n"
+                   "epa_tolerance = the width agjk certifies at that depth.\n"
                    "Error = |answer - reference|; time = mean of the fastest 90%% of %d runs.\n\n",
                 o->tolerance, o->reps);
         fprintf(f, "| family | method | n | median error | max error | median ns | time / libccd EPA tight (median) | not found | NaN | hung/crashed | not converged | outside certified interval |\n"
@@ -198,14 +209,14 @@ int depth_bench_run(const bench_set *set, const depth_bench_options *o) {
                 if (r->time_ns[DB_CCD_EPA_T] > 0) v2[nr++] = r->time_ns[col] / r->time_ns[DB_CCD_EPA_T];
             }
             if (cnt == 0) continue;
-            if (col == DB_AGJK) missed += miss;
+            if (col <= DB_AGJK_1E4) missed += miss;
             double emed = median_of(v1, ne), ratio = median_of(v2, nr);
             nr = 0;
             for (int i = 0; i < n; ++i)
                 if (problems[i].family == fam && outcome[i] == GUARD_OK) v2[nr++] = recs[i].time_ns[col];
             double tmed = median_of(v2, nr);
             char ncs[16] = "-", misses[16] = "-";
-            if (col == DB_AGJK) {
+            if (col <= DB_AGJK_1E4) {
                 snprintf(ncs, sizeof ncs, "%d", nc);
                 snprintf(misses, sizeof misses, "%d", miss);
             }

@@ -11,10 +11,13 @@
 
 enum {
     DB_AGJK = 0,      /* agjk_signed_distance, the benchmark's tolerance */
-    DB_CCD_EPA = 1,   /* ccdGJKPenetration, libccd's default epa_tolerance 1e-4 */
-    DB_CCD_EPA_T = 2, /* ccdGJKPenetration, epa_tolerance tightened to agjk's accuracy */
-    DB_CCD_MPR = 3,   /* ccdMPRPenetration, default mpr_tolerance */
-    DB_COUNT = 4
+    DB_AGJK_1E4 = 1,  /* agjk_signed_distance asked for libccd's default accuracy: an
+                         interval of width <= 1e-4 x scale (relative tolerance
+                         2e-4 x scale / depth) */
+    DB_CCD_EPA = 2,   /* ccdGJKPenetration, libccd's default epa_tolerance 1e-4 */
+    DB_CCD_EPA_T = 3, /* ccdGJKPenetration, epa_tolerance tightened to agjk's accuracy */
+    DB_CCD_MPR = 4,   /* ccdMPRPenetration, default mpr_tolerance */
+    DB_COUNT = 5
 };
 
 typedef struct depth_bench_options {
