@@ -329,8 +329,9 @@ static int tetrahedron_faces(epa_state *st) {
  * store is full or the result would not be a closed surface of proper
  * triangles (rounding can make the visible region pinched). */
 static int insert(epa_state *st, const agjk__vertex *s, int f0) {
+    /* A simple horizon cycle visits each vertex at most once: MAX_VERTICES edges. */
     int stack[MAX_FACES], visible[MAX_FACES];
-    int hu[MAX_FACES], hv[MAX_FACES], hg[MAX_FACES], hj[MAX_FACES];
+    int hu[MAX_VERTICES], hv[MAX_VERTICES], hg[MAX_VERTICES], hj[MAX_VERTICES];
     int nstack = 0, nvis = 0, nh = 0;
     if (st->nv >= MAX_VERTICES) return 0;
     int stamp = ++st->stamp;
@@ -348,6 +349,7 @@ static int insert(epa_state *st, const agjk__vertex *s, int f0) {
                 if (g->visible) stack[nstack++] = st->f[fi].adj[e];
             }
             if (!g->visible) {
+                if (nh == MAX_VERTICES) return 0;
                 hu[nh] = st->f[fi].v[e];
                 hv[nh] = st->f[fi].v[(e + 1) % 3];
                 hg[nh] = st->f[fi].adj[e];
@@ -357,7 +359,7 @@ static int insert(epa_state *st, const agjk__vertex *s, int f0) {
         }
     }
     /* The horizon must be one simple cycle: every vertex starts one edge. */
-    int next[MAX_FACES], simple = 1;
+    int next[MAX_VERTICES], simple = 1;
     for (int i = 0; i < nh && simple; ++i) {
         if (st->start_of[hu[i]] >= 0) simple = 0;
         else st->start_of[hu[i]] = i;
@@ -370,8 +372,8 @@ static int insert(epa_state *st, const agjk__vertex *s, int f0) {
     if (!simple) return 0;
     if (nh > st->nfree + nvis + (MAX_FACES - st->nf)) return 0;
     /* The new faces must have normals. */
-    agjk_vec3 hn[MAX_FACES];
-    double hd[MAX_FACES], he[MAX_FACES];
+    agjk_vec3 hn[MAX_VERTICES];
+    double hd[MAX_VERTICES], he[MAX_VERTICES];
     for (int i = 0; i < nh; ++i)
         if (!face_plane(st->v[hu[i]].w, st->v[hv[i]].w, s->w, &hn[i], &hd[i], &he[i])) return 0;
     /* Commit. */
@@ -381,7 +383,7 @@ static int insert(epa_state *st, const agjk__vertex *s, int f0) {
         st->f[visible[i]].alive = 0;
         st->free_faces[st->nfree++] = visible[i];
     }
-    int slot[MAX_FACES];
+    int slot[MAX_VERTICES];
     for (int i = 0; i < nh; ++i) {
         if (st->nfree > 0) {
             slot[i] = st->free_faces[--st->nfree];
