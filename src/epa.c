@@ -25,13 +25,11 @@
 
 #define MAX_VERTICES AGJK_EPA_MAX_VERTICES
 #define MAX_FACES (2 * AGJK_EPA_MAX_VERTICES)
-#define HEAP_CAPACITY (2 * MAX_FACES)
 
 typedef struct epa_face {
     int v[3];     /* vertex indices, counter-clockwise seen from outside */
     int adj[3];   /* face across edge i, from v[i] to v[(i + 1) % 3] */
     int adje[3];  /* index of that edge in face adj[i] */
-    int gen;      /* bumped when the slot gets a new face (stale heap entries) */
     agjk_vec3 n;  /* unit outward normal */
     double dist;  /* offset <n, p> of the face's plane */
     double err;   /* rounding allowance on dist */
@@ -45,11 +43,13 @@ typedef struct epa_state {
     agjk__vertex v[MAX_VERTICES];
     int nv;
     epa_face f[MAX_FACES];
-    /* Faces by dist - err (the lower bound each proves), a binary min-heap
-     * with lazy deletion: entries of dead or reused slots are dropped when
-     * they reach the top. */
-    struct { double dist; int face, gen; } heap[HEAP_CAPACITY];
-    int nheap;
+    /* The live faces, with dist - err (the lower bound each proves) in a
+     * contiguous array: the nearest face is a tight scan. pos[] locates a
+     * face in it for removal. */
+    int live[MAX_FACES];
+    double key[MAX_FACES];
+    int pos[MAX_FACES];
+    int nlive;
     int start_of[MAX_VERTICES]; /* insert's scratch: horizon edge starting at a vertex, or -1 */
     int nf;                 /* face slots in use, alive or free */
     int free_faces[MAX_FACES];
@@ -111,28 +111,27 @@ static void follow_rescale(epa_state *st) {
         st->f[i].dist *= f;
         st->f[i].err *= f;
     }
-    for (int i = 0; i < st->nheap; ++i) st->heap[i].dist *= f;
+    for (int i = 0; i < st->nlive; ++i) st->key[i] *= f;
     st->upper *= f;
     st->estimate *= f;
     st->lower *= f;
 }
 
-/* The point of D farthest along n (n non-zero), and the upper bound it proves. */
+/* The point of D farthest along n (a unit vector to rounding: a face normal
+ * or a blow-up direction), and the upper bound it proves. */
 static int support(epa_state *st, agjk_vec3 n, agjk__vertex *s) {
     agjk__minkowski_support(st->md, v3_neg(n), s); /* argmin <-n, .> */
     ++st->support_calls;
     if (st->md->bad_support) return 0;
     follow_rescale(st);
-    double len = v3_norm(n);
-    if (len > 0.0) {
-        double h = v3_dot(n, s->w) / len;
-        /* Rounding of the dot product and of the division. */
-        double up = h + 8.0 * DBL_EPSILON * v3_norm(s->w);
-        if (up < st->upper) {
-            st->upper = up;
-            st->estimate = h;
-            st->upper_n = v3_scale(n, 1.0 / len);
-        }
+    double h = v3_dot(n, s->w);
+    /* Rounding of the dot product and |n| = 1 +- a few eps, with
+     * |w| <= sqrt(3) max |w_i|. */
+    double up = h + 24.0 * DBL_EPSILON * v3_maxabs(s->w);
+    if (up < st->upper) {
+        st->upper = up;
+        st->estimate = h;
+        st->upper_n = n;
     }
     return 1;
 }
@@ -161,42 +160,18 @@ static int face_plane(agjk_vec3 p0, agjk_vec3 p1, agjk_vec3 p2, agjk_vec3 *n, do
     return isfinite(*err) && isfinite(*dist);
 }
 
-static void heap_push(epa_state *st, double dist, int face, int gen) {
-    int i = st->nheap++;
-    while (i > 0 && st->heap[(i - 1) / 2].dist > dist) {
-        st->heap[i] = st->heap[(i - 1) / 2];
-        i = (i - 1) / 2;
-    }
-    st->heap[i].dist = dist;
-    st->heap[i].face = face;
-    st->heap[i].gen = gen;
+static void live_add(epa_state *st, int fi) {
+    st->pos[fi] = st->nlive;
+    st->live[st->nlive] = fi;
+    st->key[st->nlive] = st->f[fi].dist - st->f[fi].err;
+    ++st->nlive;
 }
 
-static void heap_pop(epa_state *st) {
-    int n = --st->nheap, i = 0;
-    if (n == 0) return;
-    double d = st->heap[n].dist;
-    for (;;) {
-        int c = 2 * i + 1;
-        if (c >= n) break;
-        if (c + 1 < n && st->heap[c + 1].dist < st->heap[c].dist) ++c;
-        if (st->heap[c].dist >= d) break;
-        st->heap[i] = st->heap[c];
-        i = c;
-    }
-    st->heap[i] = st->heap[n];
-}
-
-/* Records face fi in the heap; when the heap is full of stale entries,
- * rebuilds it from the live faces (at most MAX_FACES < HEAP_CAPACITY). */
-static void heap_add(epa_state *st, int fi) {
-    if (st->nheap == HEAP_CAPACITY) {
-        st->nheap = 0;
-        for (int i = 0; i < st->nf; ++i)
-            if (st->f[i].alive && i != fi)
-                heap_push(st, st->f[i].dist - st->f[i].err, i, st->f[i].gen);
-    }
-    heap_push(st, st->f[fi].dist - st->f[fi].err, fi, st->f[fi].gen);
+static void live_remove(epa_state *st, int fi) {
+    int j = st->pos[fi], last = --st->nlive;
+    st->live[j] = st->live[last];
+    st->key[j] = st->key[last];
+    st->pos[st->live[j]] = j;
 }
 
 static void set_face(epa_state *st, int fi, int a, int b, int c, agjk_vec3 n, double dist,
@@ -211,8 +186,7 @@ static void set_face(epa_state *st, int fi, int a, int b, int c, agjk_vec3 n, do
     f->alive = 1;
     f->stamp = 0;
     f->visible = 0;
-    ++f->gen;
-    heap_add(st, fi);
+    live_add(st, fi);
 }
 
 /* Whether the point w lies beyond face f, by more than its rounding allowance. */
@@ -307,8 +281,7 @@ static int tetrahedron_faces(epa_state *st) {
     static const int adje[4][3] = {{0, 0, 0}, {2, 2, 1}, {1, 2, 1}, {0, 2, 1}};
     st->nf = 4;
     st->nfree = 0;
-    st->nheap = 0;
-    for (int i = 0; i < 4; ++i) st->f[i].gen = 0;
+    st->nlive = 0;
     for (int i = 0; i < 4; ++i) {
         agjk_vec3 n;
         double d, err;
@@ -381,16 +354,12 @@ static int insert(epa_state *st, const agjk__vertex *s, int f0) {
     st->v[st->nv++] = *s;
     for (int i = 0; i < nvis; ++i) {
         st->f[visible[i]].alive = 0;
+        live_remove(st, visible[i]);
         st->free_faces[st->nfree++] = visible[i];
     }
     int slot[MAX_VERTICES];
     for (int i = 0; i < nh; ++i) {
-        if (st->nfree > 0) {
-            slot[i] = st->free_faces[--st->nfree];
-        } else {
-            slot[i] = st->nf++;
-            st->f[slot[i]].gen = 0;
-        }
+        slot[i] = st->nfree > 0 ? st->free_faces[--st->nfree] : st->nf++;
     }
     for (int i = 0; i < nh; ++i) {
         int fi = slot[i];
@@ -412,18 +381,16 @@ static int insert(epa_state *st, const agjk__vertex *s, int f0) {
  * allowance): EPA expands it. Also the certified lower bound the polytope
  * proves, min over faces of dist - err, or -inf if it proves none (some face
  * may not have the origin strictly inside). */
-static int nearest_face(epa_state *st, double *proved) {
-    while (st->nheap > 0) {
-        int fi = st->heap[0].face;
-        if (st->f[fi].alive && st->f[fi].gen == st->heap[0].gen) {
-            double low = st->heap[0].dist;
-            *proved = low > 0.0 ? low : -INFINITY;
-            return fi;
+static int nearest_face(const epa_state *st, double *proved) {
+    int best = 0;
+    double low = st->key[0];
+    for (int i = 1; i < st->nlive; ++i)
+        if (st->key[i] < low) {
+            low = st->key[i];
+            best = i;
         }
-        heap_pop(st);
-    }
-    *proved = -INFINITY; /* not reached: a closed surface has faces */
-    return 0;
+    *proved = low > 0.0 ? low : -INFINITY;
+    return st->live[best];
 }
 
 /* Whether [lower, upper] (depth, with vertex noise) meets the target. */
@@ -496,7 +463,7 @@ void agjk__epa(agjk__minkowski *md, const agjk__epa_input *in, agjk__epa_output 
     st.nv = 0;
     st.nf = 0;
     st.nfree = 0;
-    st.nheap = 0;
+    st.nlive = 0;
     st.stamp = 0;
     st.upper = INFINITY;
     st.estimate = INFINITY;
