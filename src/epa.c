@@ -396,7 +396,7 @@ static int nearest_face(const epa_state *st, double *proved) {
 /* Whether [lower, upper] (depth, with vertex noise) meets the target. */
 static int width_met(const epa_state *st, const agjk__epa_input *in, double noise,
                      double floor) {
-    double lo = st->lower - noise, up = st->upper + noise;
+    double lo = st->lower - 2.0 * noise, up = st->upper + 2.0 * noise;
     if (!(up < INFINITY) || !(lo > -INFINITY)) return 0;
     double margin = in->margin * st->md->scale;
     double target = agjk__epa_target(in->relative, in->tolerance, st->md->scale, -(up + margin),
@@ -531,16 +531,26 @@ void agjk__epa(agjk__minkowski *md, const agjk__epa_input *in, agjk__epa_output 
             if (!support(&st, st.f[best].n, &s)) out->outcome = AGJK__EPA_BAD_SUPPORT;
         }
     }
-    double noise = agjk__epa_noise(md);
+    /* Twice the solver's noise scale on each end: a support value and a face
+     * offset combine points of both shapes, and a verdict at the edge of the
+     * noise model (magnitudes 1e15 apart, found by fuzzing) must not flip. */
+    double noise = 2.0 * agjk__epa_noise(md);
     out->upper = st.upper + noise;
     out->lower = st.lower - noise;
-    if (out->upper < out->lower) out->upper = out->lower; /* both within rounding */
+    if (out->upper < out->lower) {
+        /* Two certificates that contradict each other can only do so by
+         * rounding beyond the allowances (extreme magnitude ranges): keep
+         * both ends, no verdict from a zero-width interval. */
+        double t = out->upper;
+        out->upper = out->lower;
+        out->lower = t;
+    }
     out->estimate = st.estimate;
     if (out->estimate > out->upper) out->estimate = out->upper;
     if (out->estimate < out->lower) out->estimate = out->lower;
     out->normal = st.upper_n;
     out->converged = out->outcome != AGJK__EPA_BAD_SUPPORT &&
-                     width_met(&st, in, noise, agjk__epa_floor(md));
+                     width_met(&st, in, agjk__epa_noise(md), agjk__epa_floor(md));
     if (out->converged && out->outcome != AGJK__EPA_FLAT) out->outcome = AGJK__EPA_CONVERGED;
     out->support_calls = st.support_calls;
 }

@@ -135,19 +135,24 @@ static void check_signed(const agjk_shape *a, const agjk_pose *pa, const agjk_sh
                    fabs(pb->translation.x) + fabs(pb->translation.y) + fabs(pb->translation.z) +
                    fz_extent(a) + fz_extent(b) + a->margin + b->margin;
     double slack = 1e-12 * scale;
-    FUZZ_CHECK(!((ss == AGJK_STATUS_SEPARATED && sd == AGJK_STATUS_INTERSECTING) ||
-                 (ss == AGJK_STATUS_INTERSECTING && sd == AGJK_STATUS_SEPARATED)),
-               "signed says %s, distance says %s", agjk_status_string(ss), agjk_status_string(sd));
     if (sd == AGJK_STATUS_SEPARATED)
         FUZZ_CHECK(r.upper >= d.distance - d.bound - slack && r.lower <= d.distance + slack,
                    "signed [%.17g, %.17g] vs distance [%.17g, %.17g]", r.lower, r.upper,
                    d.distance - d.bound, d.distance);
-    if (ss == AGJK_STATUS_INTERSECTING) {
+    {
+        /* For every n, h_D(n) >= -s (s the signed distance); the lower end
+         * of the interval comes from a support value: h_D(normal) <= -lower. */
         agjk_vec3 n = r.normal, m = {-r.normal.x, -r.normal.y, -r.normal.z};
         double h = fz_support_value(a, pa, n) + fz_support_value(b, pb, m);
-        FUZZ_CHECK(h <= -r.lower + slack, "depth bound %.17g below h_D(normal) %.17g (scale %g)",
+#ifdef FUZZ_DEBUG
+        fprintf(stderr, "signed: h_A(n) + h_B(-n) = %.17g, -lower = %.17g\n", h, -r.lower);
+#endif
+        FUZZ_CHECK(h <= -r.lower + slack, "-lower %.17g below h_D(normal) %.17g (scale %g)",
                    -r.lower, h, scale);
     }
+    FUZZ_CHECK(!((ss == AGJK_STATUS_SEPARATED && sd == AGJK_STATUS_INTERSECTING) ||
+                 (ss == AGJK_STATUS_INTERSECTING && sd == AGJK_STATUS_SEPARATED)),
+               "signed says %s, distance says %s", agjk_status_string(ss), agjk_status_string(sd));
 }
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
