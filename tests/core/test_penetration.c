@@ -471,6 +471,91 @@ START_TEST(witness_points) {
 }
 END_TEST
 
+/* Honest statuses: a full polytope store and the iteration cap end
+ * NOT_CONVERGED with an interval that still holds the truth; degenerate
+ * starts (GJK ending on a point or a segment: cubes touching corner to corner
+ * or edge to edge; D a single point or a segment) give the right depth. */
+START_TEST(degenerate_and_capped) {
+    agjk_shape a, b;
+    agjk_pose ia = ident();
+    char what[96];
+    /* Deep overlap of two spheres as ellipsoid cores (no margin): round D,
+     * the polytope must follow it everywhere; a tolerance at the floor fills
+     * the store. Truth: r1 + r2 - d. */
+    agjk_ellipsoid e1 = {{0.5, 0.5, 0.5}}, e2 = {{0.4, 0.4, 0.4}};
+    agjk_shape_ellipsoid(&a, &e1);
+    agjk_shape_ellipsoid(&b, &e2);
+    agjk_pose pb = at(0.1, 0.05, -0.02);
+    double truth = tu_norm(pb.translation) - 0.9;
+    agjk_options o = agjk_default_options();
+    o.tolerance = 1e-30;
+    agjk_signed_result r = signed_query(&a, &ia, &b, &pb, &o);
+    check_against(&r, truth, truth, 1e-15, &o, 1, "store full");
+    TU_CHECK_INT_EQ(r.status, AGJK_STATUS_NOT_CONVERGED);
+    TU_CHECK(r.epa_iterations <= AGJK_EPA_MAX_VERTICES);
+    for (int cap = 1; cap <= 8; cap *= 2) {
+        o = agjk_default_options();
+        o.max_iterations = cap;
+        r = signed_query(&a, &ia, &b, &pb, &o);
+        snprintf(what, sizeof what, "cap %d", cap);
+        check_against(&r, truth, truth, 1e-15, &o, 1, what);
+        TU_CHECK(r.epa_iterations <= cap && r.gjk_iterations <= cap);
+        TU_CHECK_INT_EQ(r.status, AGJK_STATUS_NOT_CONVERGED);
+    }
+    /* Cubes touching corner to corner, edge to edge (turned 45 degrees about
+     * z), and overlapping by 1e-9 that way: depth 0 or 1e-9. */
+    agjk_box cube = {{0.5, 0.5, 0.5}};
+    agjk_shape_box(&a, &cube);
+    agjk_shape_box(&b, &cube);
+    o = agjk_default_options();
+    o.tolerance = 1e-30;
+    const double gaps[] = {0.0, -1e-9, -1e-6};
+    for (int k = 0; k < 3; ++k) {
+        double g = gaps[k];
+        agjk_pose corner = at(1 + g, 1 + g, 1 + g);
+        r = signed_query(&a, &ia, &b, &corner, &o);
+        snprintf(what, sizeof what, "cubes corner to corner %g", g);
+        check_against(&r, g, g, 1e-15, &o, 3, what);
+        agjk_pose edge = at(1 + g, 1 + g, 0.3);
+        r = signed_query(&a, &ia, &b, &edge, &o);
+        snprintf(what, sizeof what, "cubes edge to edge %g", g);
+        check_against(&r, g, g, 1e-15, &o, 3, what);
+        /* B turned 45 degrees about z: its vertical edge against A's face */
+        double c = sqrt(0.5);
+        agjk_pose turned = at(0.5 + c + g, 0.1, 0.0);
+        double rz[3][3] = {{c, -c, 0}, {c, c, 0}, {0, 0, 1}};
+        memcpy(turned.rotation, rz, sizeof rz);
+        r = signed_query(&a, &ia, &b, &turned, &o);
+        snprintf(what, sizeof what, "turned cube edge on face %g", g);
+        check_against(&r, g, g, 1e-15, &o, 3, what);
+    }
+    /* D a single point (two points), a segment (point and segment), a flat
+     * square (point and square): depth 0 when the origin is in D. */
+    agjk_vec3 seg[2] = {{-1, 0, 0}, {1, 0, 0}};
+    agjk_polytope segp = {seg, 2, NULL, NULL};
+    agjk_box square = {{0.5, 0.5, 0.0}};
+    agjk_shape_point(&a);
+    agjk_shape_point(&b);
+    r = signed_query(&a, &ia, &b, &ia, &o);
+    check_against(&r, 0, 0, 1e-15, &o, 1, "point on point");
+    agjk_shape_polytope(&b, &segp);
+    agjk_pose ps = at(0.3, 0, 0);
+    r = signed_query(&a, &ia, &b, &ps, &o);
+    check_against(&r, 0, 0, 1e-15, &o, 1, "point on segment");
+    agjk_shape_box(&b, &square);
+    agjk_pose pq = at(0.2, -0.1, 0);
+    r = signed_query(&a, &ia, &b, &pq, &o);
+    check_against(&r, 0, 0, 1e-15, &o, 1, "point in square");
+    /* with margins: a sphere touching a flat square from above, and resting
+     * 0.1 deep in it */
+    agjk_shape_sphere(&a, 0.25);
+    agjk_pose up = at(0.2, -0.1, 0.15);
+    r = signed_query(&b, &ia, &a, &up, &o);
+    check_against(&r, -0.1, -0.1, 1e-15, &o, 1, "sphere into square");
+    TU_CHECK(fabs(r.normal.z - 1.0) < 1e-12);
+}
+END_TEST
+
 int main(void) {
     Suite *s = suite_create("penetration");
     TU_ADD(s, analytic);
@@ -479,5 +564,6 @@ int main(void) {
     TU_ADD(s, ellipsoids_vs_bb);
     TU_ADD(s, properties);
     TU_ADD(s, witness_points);
+    TU_ADD(s, degenerate_and_capped);
     return tu_run_suite(s);
 }
