@@ -157,7 +157,7 @@ static int face_plane(agjk_vec3 p0, agjk_vec3 p1, agjk_vec3 p2, agjk_vec3 *n, do
     if (v3_maxabs(p2) > r) r = v3_maxabs(p2);
     double skew = (v3_norm2(e1) + v3_norm2(e2)) / (2.0 * len);
     *err = 32.0 * DBL_EPSILON * r * (skew + 1.0);
-    return isfinite(*err) && isfinite(*dist);
+    return 1; /* finite: solver units keep coordinates below 2^101 */
 }
 
 static void live_add(epa_state *st, int fi) {
@@ -331,24 +331,27 @@ static int insert(epa_state *st, const agjk__vertex *s, int f0) {
             }
         }
     }
-    /* The horizon must be one simple cycle: every vertex starts one edge. */
-    int next[MAX_VERTICES], simple = 1;
-    for (int i = 0; i < nh && simple; ++i) {
-        if (st->start_of[hu[i]] >= 0) simple = 0;
-        else st->start_of[hu[i]] = i;
-    }
-    for (int i = 0; i < nh && simple; ++i) {
-        next[i] = st->start_of[hv[i]];
-        if (next[i] < 0) simple = 0;
-    }
-    for (int i = 0; i < nh; ++i) st->start_of[hu[i]] = -1;
-    if (!simple) return 0;
-    if (nh > st->nfree + nvis + (MAX_FACES - st->nf)) return 0;
-    /* The new faces must have normals. */
+    /* The horizon must be one simple cycle (every vertex starts one edge),
+     * the store must hold the new faces, and they need normals. */
+    int next[MAX_VERTICES];
     agjk_vec3 hn[MAX_VERTICES];
     double hd[MAX_VERTICES], he[MAX_VERTICES];
-    for (int i = 0; i < nh; ++i)
-        if (!face_plane(st->v[hu[i]].w, st->v[hv[i]].w, s->w, &hn[i], &hd[i], &he[i])) return 0;
+    int ok = nh <= st->nfree + nvis + (MAX_FACES - st->nf), marked = 0;
+    while (ok && marked < nh) {
+        int u = hu[marked];
+        if (st->start_of[u] >= 0) break; /* u starts two edges: pinched */
+        st->start_of[u] = marked;
+        ok = face_plane(st->v[u].w, st->v[hv[marked]].w, s->w, &hn[marked], &hd[marked],
+                        &he[marked]);
+        ++marked;
+    }
+    ok = ok && marked == nh;
+    for (int i = 0; ok && i < nh; ++i) {
+        next[i] = st->start_of[hv[i]];
+        ok = next[i] >= 0;
+    }
+    for (int i = 0; i < marked; ++i) st->start_of[hu[i]] = -1;
+    if (!ok) return 0;
     /* Commit. */
     int si = st->nv;
     st->v[st->nv++] = *s;
@@ -358,10 +361,10 @@ static int insert(epa_state *st, const agjk__vertex *s, int f0) {
         st->free_faces[st->nfree++] = visible[i];
     }
     int slot[MAX_VERTICES];
+    for (int i = 0; i < nh; ++i) slot[i] = st->nfree > 0 ? st->free_faces[--st->nfree] : st->nf++;
     for (int i = 0; i < nh; ++i) {
-        slot[i] = st->nfree > 0 ? st->free_faces[--st->nfree] : st->nf++;
-    }
-    for (int i = 0; i < nh; ++i) {
+        /* face i: edge 0 on the horizon (twin in the kept face hg[i]), edge 1
+         * shared with face next[i] (its edge 2), edge 2 with the face before */
         int fi = slot[i];
         set_face(st, fi, hu[i], hv[i], si, hn[i], hd[i], he[i]);
         epa_face *f = &st->f[fi];
@@ -370,10 +373,10 @@ static int insert(epa_state *st, const agjk__vertex *s, int f0) {
         f->adj[1] = slot[next[i]];
         f->adje[1] = 2;
         f->adje[2] = 1;
+        st->f[slot[next[i]]].adj[2] = fi;
         st->f[hg[i]].adj[hj[i]] = fi;
         st->f[hg[i]].adje[hj[i]] = 0;
     }
-    for (int i = 0; i < nh; ++i) st->f[slot[next[i]]].adj[2] = slot[i];
     return 1;
 }
 
