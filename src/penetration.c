@@ -65,6 +65,15 @@ static agjk_status invalid(agjk_signed_result *r) {
     return r->status = AGJK_STATUS_INVALID_INPUT;
 }
 
+/* Back in the caller's units (a power of two, exact) the interval may land
+ * among subnormal numbers, where the product rounds: widen it by one ulp
+ * outwards whenever the units changed. */
+static void widen_after_rescale(agjk_signed_result *r, double scale) {
+    if (scale == 1.0) return;
+    r->lower = nextafter(r->lower, -INFINITY);
+    r->upper = nextafter(r->upper, INFINITY);
+}
+
 static agjk_status finish(agjk_signed_result *r, int converged) {
     if (!converged) return r->status = AGJK_STATUS_NOT_CONVERGED;
     if (r->lower > 0.0) return r->status = AGJK_STATUS_SEPARATED;
@@ -91,6 +100,7 @@ static agjk_status separated_cores(agjk_signed_result *result, const gjk_summary
         result->witness_a = to_world(pose_a, v3_add(v3_scale(g->a, inv), v3_scale(n, margin_a)));
         result->witness_b = to_world(pose_a, v3_sub(v3_scale(g->b, inv), v3_scale(n, margin_b)));
     }
+    widen_after_rescale(result, md->scale);
     return finish(result, converged);
 }
 
@@ -180,5 +190,6 @@ agjk_status agjk_signed_distance(const agjk_shape *a, const agjk_pose *pose_a,
         result->witness_a = to_world(pose_a, wa);
         result->witness_b = to_world(pose_a, wb);
     }
+    widen_after_rescale(result, md.scale);
     return finish(result, eout.converged);
 }

@@ -134,7 +134,9 @@ static void check_signed(const agjk_shape *a, const agjk_pose *pa, const agjk_sh
     double scale = fabs(pa->translation.x) + fabs(pa->translation.y) + fabs(pa->translation.z) +
                    fabs(pb->translation.x) + fabs(pb->translation.y) + fabs(pb->translation.z) +
                    fz_extent(a) + fz_extent(b) + a->margin + b->margin;
-    double slack = 1e-12 * scale;
+    /* plus a few subnormal ulps: the world-frame evaluation below rounds
+     * absolutely there */
+    double slack = 1e-12 * scale + 16 * 4.9406564584124654e-324;
     if (sd == AGJK_STATUS_SEPARATED)
         FUZZ_CHECK(r.upper >= d.distance - d.bound - slack && r.lower <= d.distance + slack,
                    "signed [%.17g, %.17g] vs distance [%.17g, %.17g]", r.lower, r.upper,
