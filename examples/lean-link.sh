@@ -2,7 +2,8 @@
 # "Leave out what a scene does not need": a program using only spheres and
 # boxes, linked against libagjk.a with --gc-sections (a dynamically linked
 # program with the library linked in statically), must contain no polytope,
-# hull, adjacency, ellipsoid, cylinder or cone code. Prints its text size.
+# hull, adjacency, ellipsoid, cylinder or cone code, and no penetration depth
+# (EPA) code. Prints its text size.
 #
 #   examples/lean-link.sh [PROGRAM]
 # Default: $OUT/examples/spheres_and_boxes (OUT defaults to out), built first
@@ -17,7 +18,7 @@ else
     make -s -C "$top" OUT="${OUT:-out}" "$target" >/dev/null
     case $target in /*) bin=$target ;; *) bin=$top/$target ;; esac
 fi
-unwanted=$(nm "$bin" | grep -i -E 'polytope|adjacency|hull|ellipsoid|cylinder|cone_|capsule|segment_support|(^| |_)epa' || true)
+unwanted=$(nm "$bin" | grep -i -E 'polytope|adjacency|hull|ellipsoid|cylinder|cone_|capsule|segment_support|(^| |_)epa|signed_distance|penetration' || true)
 if [ -n "$unwanted" ]; then
     echo "lean link: unexpected symbols in $bin:" >&2
     echo "$unwanted" >&2

@@ -396,4 +396,11 @@ void agjk__solve(agjk__minkowski *md, const agjk__solve_input *in, agjk__solve_o
     }
     out->a = a;
     out->b = b;
+    /* The final active set, for EPA (its a and b only with want_witness). */
+    for (int i = 0; i < sv.count; ++i) {
+        out->simplex[i].w = sv.w[i];
+        out->simplex[i].a = in->want_witness ? sv.a[i] : v3(0.0, 0.0, 0.0);
+        out->simplex[i].b = in->want_witness ? sv.b[i] : v3(0.0, 0.0, 0.0);
+    }
+    out->simplex_count = sv.count;
 }

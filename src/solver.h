@@ -52,6 +52,9 @@ typedef struct agjk__solve_output {
     int iterations;
     int support_calls;
     int momentum_stop;
+    /* The final active set (A's frame, solver units): EPA starts from it. */
+    agjk__vertex simplex[4];
+    int simplex_count;
 } agjk__solve_output;
 
 void agjk__solve(agjk__minkowski *md, const agjk__solve_input *in, agjk__solve_output *out);

@@ -144,6 +144,13 @@ done
 distance_is "scan support" 2 1e-12 "$C" "$C" --pose-b 3 0 0 1 0 0 0 --scan
 run "overlapping cubes" 0 distance "$C" "$C" --pose-b 0.5 0.2 0 1 0 0 0 --json &&
     check_json "overlapping cubes" "r['status'] == 'intersecting' and r['distance'] == 0"
+# --signed: minus the penetration depth (cubes overlapping by 0.5 on x, 0.8 on y)
+run "signed, overlapping cubes" 0 distance "$C" "$C" --pose-b 0.5 0.2 0 1 0 0 0 --signed --json &&
+    check_json "signed, overlapping cubes" "r['status'] == 'intersecting' and abs(r['signed_distance'] + 0.5) <= 1e-12 and r['interval'][0] <= -0.5 <= r['interval'][1] and r['normal'] == [1, 0, 0] and abs(r['witness_a'][0] - r['witness_b'][0] - 0.5) <= 1e-12"
+run "signed, separated cubes" 0 distance "$C" "$C" --pose-b 3 0 0 1 0 0 0 --signed --json &&
+    check_json "signed, separated cubes" "abs(r['signed_distance'] - 2) <= 1e-12 and r['interval'][0] <= 2 <= r['interval'][1] and r['status'] == 'separated'"
+run "signed, text" 0 distance "$C" "$C" --pose-b 0 0 0.25 1 0 0 0 --signed &&
+    { grep -q '^signed_distance: *-0.75' "$tmp/out" && grep -q '^interval:' "$tmp/out" && ok || bad "signed, text output"; }
 
 # --- quaternion convention: +90 degrees about z turns +x into +y ----------------------
 printf 'OFF\n4 4 0\n0 0 0\n2 0 0\n0 0.1 0\n0 0 0.1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n' >"$tmp/arrow.off"

@@ -6,7 +6,7 @@
 
 TEST_COMMON_SRCS := tests/common/ref_support.c tests/common/ref_simplex.c \
                     tests/common/reference.c tests/common/ref_agjk.c tests/common/testutil.c \
-                    tests/common/brute_hull.c
+                    tests/common/brute_hull.c tests/common/ref_depth.c
 TEST_COMMON_HDRS := $(wildcard tests/common/*.h)
 TEST_COMMON_OBJS := $(TEST_COMMON_SRCS:%.c=$(OUT)/%.o)
 TEST_COMMON_LIB  := $(OUT)/tests/common/libtestcommon.a

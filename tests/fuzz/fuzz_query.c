@@ -102,6 +102,61 @@ static void decode_shape(fuzz_reader *r, fz_shape *s) {
     }
 }
 
+/* agjk_signed_distance on the same input: status and fields sane, the
+ * interval ordered, consistent with agjk_distance's certified verdict, and
+ * (overlap) the depth bound real: h_A(n) + h_B(-n) <= -lower, evaluated
+ * through the shapes' own supports. */
+static void check_signed(const agjk_shape *a, const agjk_pose *pa, const agjk_shape *b,
+                         const agjk_pose *pb, const agjk_options *o, int exact) {
+    agjk_signed_result r;
+    agjk_result d;
+    agjk_status ss = agjk_signed_distance(a, pa, b, pb, o, &r);
+    agjk_status sd = agjk_distance(a, pa, b, pb, o, &d);
+#ifdef FUZZ_DEBUG
+    fprintf(stderr, "signed: %s s %.17g [%.17g, %.17g] n %g %g %g it %d/%d\n",
+            agjk_status_string(ss), r.signed_distance, r.lower, r.upper, r.normal.x, r.normal.y,
+            r.normal.z, r.gjk_iterations, r.epa_iterations);
+#endif
+    FUZZ_CHECK(ss == r.status && (unsigned)ss <= AGJK_STATUS_INVALID_INPUT, "signed status %d", ss);
+    const double v[12] = {r.signed_distance, r.lower, r.upper, r.normal.x, r.normal.y, r.normal.z,
+                          r.witness_a.x, r.witness_a.y, r.witness_a.z, r.witness_b.x,
+                          r.witness_b.y, r.witness_b.z};
+    for (int i = 0; i < 12; i++) FUZZ_CHECK(isfinite(v[i]), "signed field %d not finite", i);
+    if (sd == AGJK_STATUS_INVALID_INPUT && d.support_calls == 0)
+        FUZZ_CHECK(ss == AGJK_STATUS_INVALID_INPUT, "distance rejects the input, signed accepts");
+    if (ss == AGJK_STATUS_INVALID_INPUT) return;
+    FUZZ_CHECK(r.lower <= r.signed_distance && r.signed_distance <= r.upper,
+               "signed %.17g outside [%.17g, %.17g]", r.signed_distance, r.lower, r.upper);
+    FUZZ_CHECK(r.epa_iterations >= 0 && r.gjk_iterations >= 0 && r.support_calls >= 0, "counters");
+    if (ss == AGJK_STATUS_SEPARATED) FUZZ_CHECK(r.lower > 0, "SEPARATED with lower %g", r.lower);
+    if (ss == AGJK_STATUS_INTERSECTING) FUZZ_CHECK(r.upper < 0, "INTERSECTING with upper %g", r.upper);
+    if (!exact || !a || !b) return;
+    double scale = fabs(pa->translation.x) + fabs(pa->translation.y) + fabs(pa->translation.z) +
+                   fabs(pb->translation.x) + fabs(pb->translation.y) + fabs(pb->translation.z) +
+                   fz_extent(a) + fz_extent(b) + a->margin + b->margin;
+    /* plus a few subnormal ulps: the world-frame evaluation below rounds
+     * absolutely there */
+    double slack = 1e-12 * scale + 16 * 4.9406564584124654e-324;
+    if (sd == AGJK_STATUS_SEPARATED)
+        FUZZ_CHECK(r.upper >= d.distance - d.bound - slack && r.lower <= d.distance + slack,
+                   "signed [%.17g, %.17g] vs distance [%.17g, %.17g]", r.lower, r.upper,
+                   d.distance - d.bound, d.distance);
+    {
+        /* For every n, h_D(n) >= -s (s the signed distance); the lower end
+         * of the interval comes from a support value: h_D(normal) <= -lower. */
+        agjk_vec3 n = r.normal, m = {-r.normal.x, -r.normal.y, -r.normal.z};
+        double h = fz_support_value(a, pa, n) + fz_support_value(b, pb, m);
+#ifdef FUZZ_DEBUG
+        fprintf(stderr, "signed: h_A(n) + h_B(-n) = %.17g, -lower = %.17g\n", h, -r.lower);
+#endif
+        FUZZ_CHECK(h <= -r.lower + slack, "-lower %.17g below h_D(normal) %.17g (scale %g)",
+                   -r.lower, h, scale);
+    }
+    FUZZ_CHECK(!((ss == AGJK_STATUS_SEPARATED && sd == AGJK_STATUS_INTERSECTING) ||
+                 (ss == AGJK_STATUS_INTERSECTING && sd == AGJK_STATUS_SEPARATED)),
+               "signed says %s, distance says %s", agjk_status_string(ss), agjk_status_string(sd));
+}
+
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
     fuzz_reader r = {data, size, 0};
     fz_shape a, b;
@@ -133,8 +188,10 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
     if (fz_u8(&r) == 1) {
         /* NULL options: the defaults. */
         fz_check_pair(a.valid ? &a.shape : NULL, &pa, b.valid ? &b.shape : NULL, &pb, NULL, exact);
+        check_signed(a.valid ? &a.shape : NULL, &pa, b.valid ? &b.shape : NULL, &pb, NULL, exact);
     } else {
         fz_check_pair(a.valid ? &a.shape : NULL, &pa, b.valid ? &b.shape : NULL, &pb, &o, exact);
+        check_signed(a.valid ? &a.shape : NULL, &pa, b.valid ? &b.shape : NULL, &pb, &o, exact);
     }
     return 0;
 }

@@ -225,6 +225,74 @@ typedef agjk_status (*query_fn)(const agjk_shape *, const agjk_pose *, const agj
 static const query_fn queries[2] = {agjk_distance, agjk_collide};
 static const char *const query_names[2] = {"agjk_distance", "agjk_collide"};
 
+/* The same checks for agjk_signed_distance (penetration.h): guards, inputs
+ * untouched, every field finite, lower <= signed_distance <= upper, a fully
+ * zeroed result on invalid input. */
+typedef struct guarded_signed {
+    unsigned char pre[STAB_GUARD];
+    agjk_signed_result r;
+    unsigned char post[STAB_GUARD];
+} guarded_signed;
+
+static void check_signed(const char *what, const agjk_shape *a, const agjk_pose *pa,
+                         const agjk_shape *b, const agjk_pose *pb, const agjk_options *o,
+                         int expected) {
+    guarded_signed g;
+    agjk_shape a0, b0;
+    agjk_pose pa0, pb0;
+    agjk_options o0;
+    char name[192];
+    if (a) a0 = *a;
+    if (b) b0 = *b;
+    if (pa) pa0 = *pa;
+    if (pb) pb0 = *pb;
+    if (o) o0 = *o;
+    stab_guard_fill(g.pre);
+    stab_guard_fill(g.post);
+    memset(&g.r, 0xFF, sizeof g.r);
+    agjk_status st = agjk_signed_distance(a, pa, b, pb, o, &g.r);
+    const agjk_signed_result *r = &g.r;
+    snprintf(name, sizeof name, "agjk_signed_distance: %s", what);
+    ck_assert_msg(stab_guard_ok(g.pre) && stab_guard_ok(g.post), "%s: wrote outside result", name);
+    ck_assert_msg(st == r->status, "%s: returned %d, result says %d", name, st, r->status);
+    ck_assert_msg(st >= AGJK_STATUS_SEPARATED && st <= AGJK_STATUS_INVALID_INPUT,
+                  "%s: status %d", name, st);
+    const double v[] = {r->signed_distance, r->lower, r->upper, r->normal.x, r->normal.y,
+                        r->normal.z, r->witness_a.x, r->witness_a.y, r->witness_a.z,
+                        r->witness_b.x, r->witness_b.y, r->witness_b.z};
+    for (size_t i = 0; i < sizeof v / sizeof v[0]; i++)
+        ck_assert_msg(isfinite(v[i]), "%s: field %u not finite", name, (unsigned)i);
+    for (int i = 0; i < 8; i++) ck_assert_msg(r->reserved[i] == 0.0, "%s: reserved written", name);
+    ck_assert_msg(r->gjk_iterations >= 0 && r->epa_iterations >= 0 && r->support_calls >= 0,
+                  "%s: negative counter", name);
+    if (st == AGJK_STATUS_INVALID_INPUT) {
+        agjk_signed_result zero;
+        memset(&zero, 0, sizeof zero);
+        zero.status = AGJK_STATUS_INVALID_INPUT;
+        ck_assert_msg(memcmp(&zero, r, sizeof zero) == 0, "%s: invalid input, result not zeroed", name);
+    } else {
+        ck_assert_msg(r->lower <= r->signed_distance && r->signed_distance <= r->upper,
+                      "%s: %.17g outside [%.17g, %.17g]", name, r->signed_distance, r->lower, r->upper);
+        double nn = sqrt(r->normal.x * r->normal.x + r->normal.y * r->normal.y +
+                         r->normal.z * r->normal.z);
+        ck_assert_msg(nn == 0.0 || fabs(nn - 1.0) < 1e-9, "%s: normal of norm %.17g", name, nn);
+        if (o && o->max_iterations > 0)
+            ck_assert_msg(r->epa_iterations <= o->max_iterations, "%s: EPA above the cap", name);
+    }
+    ck_assert_msg(!a || memcmp(&a0, a, sizeof a0) == 0, "%s: modified shape a", name);
+    ck_assert_msg(!b || memcmp(&b0, b, sizeof b0) == 0, "%s: modified shape b", name);
+    ck_assert_msg(!pa || memcmp(&pa0, pa, sizeof pa0) == 0, "%s: modified pose a", name);
+    ck_assert_msg(!pb || memcmp(&pb0, pb, sizeof pb0) == 0, "%s: modified pose b", name);
+    ck_assert_msg(!o || memcmp(&o0, o, sizeof o0) == 0, "%s: modified options", name);
+    if (expected == INVALID)
+        ck_assert_msg(st == AGJK_STATUS_INVALID_INPUT, "%s: got %s, expected invalid input", name,
+                      agjk_status_string(st));
+    else if (expected == VALID)
+        ck_assert_msg(st != AGJK_STATUS_INVALID_INPUT, "%s: valid input rejected", name);
+    ck_assert_int_eq(agjk_signed_distance(a, pa, b, pb, o, NULL), AGJK_STATUS_INVALID_INPUT);
+    g_count += 2;
+}
+
 /* Calls both queries, checks guards, input immutability, sanity, and (if
  * expected >= 0) the status. Returns the distance query's status. */
 static agjk_status run_queries(const char *what, const agjk_shape *a, const agjk_pose *pa,
@@ -267,6 +335,7 @@ static agjk_status run_queries(const char *what, const agjk_shape *a, const agjk
         g_count += 2;
         if (q == 0) first = st;
     }
+    check_signed(what, a, pa, b, pb, o, expected);
     return first;
 }
 
@@ -524,6 +593,54 @@ END_TEST
  * verdict or NOT_CONVERGED with every field finite. A solver that rescales by
  * the magnitude of its first support point overflows when that point is tiny
  * and a later one large (found by fuzzing: distance inf, bound NaN). */
+/* agjk_signed_distance on overlapping shapes, where EPA runs: hostile
+ * supports arriving during GJK, the blow-up or EPA itself, and extreme
+ * options (one iteration, tolerances at both ends, relative mode). */
+START_TEST(test_signed_overlapping) {
+    agjk_options o = agjk_default_options();
+    setup_pair();
+    agjk_pose pb = g_pb;
+    pb.translation.x = 0.2;
+    for (int mode = 0; mode < 7; mode++)
+        for (int after = 0; after < 40; after += 3) {
+            hostile h = {mode, after};
+            agjk_shape hs = {hostile_support, &h, 0.0};
+            char what[96];
+            snprintf(what, sizeof what, "overlapping, hostile support mode %d after %d", mode, after);
+            for (int m = 0; m < 5; m++) {
+                o.method = (agjk_method)m;
+                o.max_iterations = 64;
+                check_signed(what, &hs, &g_pa, &g_sb, &pb, &o, ANY);
+                check_signed(what, &g_sa, &g_pa, &hs, &pb, &o, ANY);
+                if (mode <= 1) {
+                    agjk_signed_result r;
+                    agjk_status st = agjk_signed_distance(&hs, &g_pa, &g_sb, &pb, &o, &r);
+                    /* a NaN or Inf point handed out must end in INVALID_INPUT
+                     * (the result is zeroed then, hints included) */
+                    ck_assert_msg(st == AGJK_STATUS_INVALID_INPUT || r.hint_a <= after,
+                                  "%s: bad point used (%d calls), got %s", what, r.hint_a,
+                                  agjk_status_string(st));
+                }
+            }
+        }
+    o = agjk_default_options();
+    const int caps[] = {1, 2, 3, 1000};
+    const double tols[] = {DBL_MIN, 1e-300, 1e-8, 1.0, 1e300};
+    for (int c = 0; c < 4; c++)
+        for (int t = 0; t < 5; t++)
+            for (int mode = 0; mode < 2; mode++) {
+                char what[96];
+                o.max_iterations = caps[c];
+                o.tolerance = tols[t];
+                o.tolerance_mode = (agjk_tolerance_mode)mode;
+                snprintf(what, sizeof what, "overlapping, cap %d, tolerance %g, mode %d", caps[c],
+                         tols[t], mode);
+                check_signed(what, &g_sa, &g_pa, &g_sb, &pb, &o, VALID);
+                check_signed(what, &g_sa, &g_pa, &g_sa, &g_pa, &o, VALID); /* identical */
+            }
+}
+END_TEST
+
 START_TEST(test_mixed_magnitudes) {
     const double tiny[] = {4.9e-324, 4.3e-322, 1e-310, 1e-300, 1e-200, 0.0};
     const double big[] = {1.0, 6e10, 1e30, MAXC};
@@ -1001,6 +1118,7 @@ static Suite *bad_input_suite(void) {
     tcase_add_test(tc, test_query_null_and_options);
     tcase_add_test(tc, test_query_poses);
     tcase_add_test(tc, test_hostile_support);
+    tcase_add_test(tc, test_signed_overlapping);
     tcase_add_test(tc, test_mixed_magnitudes);
     tcase_add_test(tc, test_tiny_concentric);
     tcase_add_test(tc, test_denormal_shift_concentric);

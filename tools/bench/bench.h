@@ -18,6 +18,7 @@ typedef struct bench_config {
     int reps, slow_reps, slow_pairs, slow_max_iterations, max_iterations;
     int wp_pairs, wp_reps, ccd_reps;
     int coal_reps;             /* agjk vs Coal (coal_bench.h); 0 disables it */
+    int depth_reps;            /* penetration-depth comparison (depth_bench.h); 0 disables */
     double tolerance, mesh_scale, nesmino_mu;
     int quick, no_ccd, no_wp, relative, scan_support;
     const char *out_dir, *mesh_dir, *raw_path, *command_line;

@@ -10,6 +10,7 @@
 #include "bench.h"
 #include "ccd_adapter.h"
 #include "coal_bench.h"
+#include "depth_bench.h"
 #include "guard.h"
 #include "hull_support.h"
 #include "mesh_io.h"
@@ -35,6 +36,8 @@ static void usage(FILE *f) {
         "  --ccd-reps R      repetitions in the libccd timing (default 50; 0 disables it)\n"
         "  --coal-reps R     repetitions in the agjk/Coal timing (default 100; 0 disables it;\n"
         "                    needs a build with Coal: tools/fetch-coal.sh)\n"
+        "  --depth-reps R    repetitions in the penetration-depth comparison with libccd\n"
+        "                    (default 20; 0 disables it)\n"
         "  --tolerance T     duality-gap tolerance of the tables (default 1e-8)\n"
         "  --relative        read tolerances as relative (AGJK_TOLERANCE_RELATIVE: g <= T ||x||^2)\n"
         "                    for agjk's methods; default absolute, as in the paper\n"
@@ -66,6 +69,7 @@ static int parse(int argc, char **argv, bench_config *c) {
     c->wp_reps = 10;
     c->ccd_reps = 50;
     c->coal_reps = 100;
+    c->depth_reps = 20;
     c->max_meshes = 1000;
     c->tolerance = 1e-8;
     c->mesh_scale = 0.1;
@@ -85,6 +89,7 @@ static int parse(int argc, char **argv, bench_config *c) {
         INT_OPT("--wp-reps", wp_reps)
         INT_OPT("--ccd-reps", ccd_reps)
         INT_OPT("--coal-reps", coal_reps)
+        INT_OPT("--depth-reps", depth_reps)
         INT_OPT("--max-meshes", max_meshes)
 #undef INT_OPT
         if (strcmp(a, "--relative") == 0) { c->relative = 1; continue; }
@@ -108,6 +113,7 @@ static int parse(int argc, char **argv, bench_config *c) {
             c->wp_reps = 3;
             c->ccd_reps = 5;
             c->coal_reps = 10;
+            c->depth_reps = 3;
             c->max_meshes = 100;
             continue;
         }
@@ -267,7 +273,7 @@ int main(int argc, char **argv) {
     ccd_bench_record *ccd_recs = NULL;
     unsigned char *ccd_outcome = NULL;
     coal_bench_data *coal;
-    int h, cap_problems, cap_shapes;
+    int h, cap_problems, cap_shapes, depth_missed = 0;
     double t0, t_all = bench_now_ns();
     static char command[1024];
     char mesh_note[256] = "";
@@ -378,6 +384,11 @@ int main(int argc, char **argv) {
     }
 
     coal = coal_bench_run(&cfg, &set);
+    if (cfg.depth_reps > 0 && bench_ccd_check() == 0) {
+        depth_bench_options dopt = {cfg.depth_reps, cfg.max_iterations, cfg.tolerance, 10.0,
+                                    cfg.out_dir};
+        depth_missed = depth_bench_run(&set, &dopt); /* intervals missing the reference */
+    }
 
     {
         /* What an empty timed region costs: included in every time reported. */
@@ -413,6 +424,6 @@ int main(int argc, char **argv) {
         free(ccd_outcome);
         bench_free_meshes(&meshes);
         bench_set_free(&set);
-        return viol || wrong ? 1 : 0;
+        return viol || wrong || depth_missed ? 1 : 0;
     }
 }

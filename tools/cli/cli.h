@@ -6,6 +6,7 @@
  *   cli_guard.c  memory cap and watchdog, so no input can hang or exhaust the machine
  *   cli_shape.c  mesh file -> hull -> agjk_shape
  *   cli_query.c  `distance` and `collide`
+ *   cli_signed.c `distance --signed` (penetration depth)
  *   cli_mesh.c   `info` and `hull` */
 #ifndef AGJK_CLI_H
 #define AGJK_CLI_H
@@ -66,6 +67,10 @@ void cli_shape_free(cli_shape *s);
  * by a scan; and the same in words, for `agjk info`. */
 int cli_hull_hill_climbing(const mesh_hull *h);
 const char *cli_hull_support_text(const mesh_hull *h);
+
+/* `distance --signed` (cli_signed.c): removes --signed from argv, says if it was there. */
+int cli_take_signed_flag(int *argc, char **argv);
+int cli_signed_run(const cli_args *args, const agjk_shape *a, const agjk_shape *b);
 
 int cli_cmd_distance(int argc, char **argv);
 int cli_cmd_collide(int argc, char **argv);

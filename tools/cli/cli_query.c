@@ -100,6 +100,7 @@ static int exit_status(const char *query, agjk_status s) {
 static int run_query(int argc, char **argv, const char *query) {
     cli_args a;
     int help;
+    int is_signed = strcmp(query, "distance") == 0 && cli_take_signed_flag(&argc, argv);
     cli_args_init(&a);
     if (!cli_parse(argc, argv, 1, CLI_OPT_QUERY | CLI_OPT_JSON | CLI_OPT_SCALE, 2, &a, &help)) {
         if (help) return CLI_EXIT_OK;
@@ -115,6 +116,12 @@ static int run_query(int argc, char **argv, const char *query) {
     if (!cli_shape_load(a.inputs[1], a.scale[1], !a.no_hill_climbing, &s[1])) {
         cli_shape_free(&s[0]);
         return CLI_EXIT_ERROR;
+    }
+    if (is_signed) {
+        int code = cli_signed_run(&a, &s[0].shape, &s[1].shape);
+        cli_shape_free(&s[0]);
+        cli_shape_free(&s[1]);
+        return code;
     }
     agjk_result r;
     agjk_status st = strcmp(query, "collide") == 0

@@ -1,0 +1,558 @@
+/* SPDX-License-Identifier: MIT */
+/* Penetration depth by the Expanding Polytope Algorithm (G. van den Bergen,
+ * "Proximity queries and penetration depth computation on 3D game objects",
+ * GDC 2001; "Collision Detection in Interactive 3D Environments", 2003).
+ *
+ * A polytope P with vertices in D = A - B is grown from the simplex GJK ends
+ * with: each iteration takes the face nearest to the origin, asks for the
+ * support of D in its normal and, if that point lies beyond the face, adds it
+ * (the faces it sees are removed, the horizon is joined to it).
+ *
+ * The depth is certified both ways:
+ * - upper: for any unit n, depth = min_m h_D(m) <= h_D(n) = <n, S_D(n)>;
+ * - lower: if the faces form a closed oriented surface (each edge shared by two
+ *   faces with opposite orientation, kept so by construction) and the origin is
+ *   strictly inside every face's plane, at offset >= L, the origin has a
+ *   positive winding number and the ball of radius L around it meets no face,
+ *   so the ball lies in conv(vertices), inside D up to the vertices' rounding:
+ *   depth >= L. This needs neither exact convexity of P nor exact arithmetic,
+ *   only a rounding allowance on each face's offset (see face_plane).
+ *
+ * No allocation: the polytope lives on the stack (AGJK_EPA_MAX_VERTICES
+ * vertices, twice as many faces); every loop is bounded by it or by the
+ * iteration cap. */
+#include "epa.h"
+
+#define MAX_VERTICES AGJK_EPA_MAX_VERTICES
+#define MAX_FACES (2 * AGJK_EPA_MAX_VERTICES)
+
+typedef struct epa_face {
+    int v[3];     /* vertex indices, counter-clockwise seen from outside */
+    int adj[3];   /* face across edge i, from v[i] to v[(i + 1) % 3] */
+    int adje[3];  /* index of that edge in face adj[i] */
+    agjk_vec3 n;  /* unit outward normal */
+    double dist;  /* offset <n, p> of the face's plane */
+    double err;   /* rounding allowance on dist */
+    int alive;
+    int stamp;    /* insertion that last classified the face */
+    int visible;  /* classification of that insertion */
+} epa_face;
+
+typedef struct epa_state {
+    agjk__minkowski *md;
+    agjk__vertex v[MAX_VERTICES];
+    int nv;
+    epa_face f[MAX_FACES];
+    /* The live faces, with dist - err (the lower bound each proves) in a
+     * contiguous array: the nearest face is a tight scan. pos[] locates a
+     * face in it for removal. */
+    int live[MAX_FACES];
+    double key[MAX_FACES];
+    int pos[MAX_FACES];
+    int nlive;
+    int start_of[MAX_VERTICES]; /* insert's scratch: horizon edge starting at a vertex, or -1 */
+    int nf;                 /* face slots in use, alive or free */
+    int free_faces[MAX_FACES];
+    int nfree;
+    int stamp;
+    double upper;           /* min over evaluated unit n of <n, S_D(n)> + dot rounding */
+    agjk_vec3 upper_n;
+    double estimate;        /* <n, S_D(n)> for upper_n */
+    double lower;           /* best certified lower bound (before vertex noise) */
+    agjk__vertex extra[4];  /* blow-up points to add once the tetrahedron stands */
+    int nextra;
+    int support_calls;
+} epa_state;
+
+/* The solver's error scale of a point of D (kept up to date by the support). */
+double agjk__epa_noise(const agjk__minkowski *md) { return md->noise; }
+
+double agjk__epa_floor(const agjk__minkowski *md) {
+    /* Vertex noise on both bounds, and face offsets with their rounding
+     * allowance (larger on thin triangles): 1024 eps of the problem's size. */
+    return 256.0 * md->noise;
+}
+
+double agjk__epa_target(int relative, double tolerance, double scale, double s_lo, double s_hi,
+                        double floor) {
+    double lo = fabs(s_lo), hi = fabs(s_hi);
+    double big = lo > hi ? lo : hi;
+    if (relative) {
+        /* The smallest |s| the interval allows (0 when it holds 0). */
+        double small = (s_lo > 0.0 || s_hi < 0.0) ? (lo < hi ? lo : hi) : 0.0;
+        return 0.5 * tolerance * small;
+    }
+    /* What agjk_distance certifies at distance |s| with gap <= tolerance:
+     * min(sqrt(g), g / (2 |s|)); the largest |s| of the interval is the safe one. */
+    double tol = tolerance * scale * scale;
+    double target = sqrt(tol);
+    if (big > 0.0 && tol / (2.0 * big) < target) target = tol / (2.0 * big);
+    return target > floor ? target : floor;
+}
+
+/* Multiplies everything held in solver units by f (the support call lowered
+ * md->scale, see agjk__minkowski_shrink; exact, a power of two). */
+static void follow_rescale(epa_state *st) {
+    double f = st->md->rescaled;
+    if (f == 1.0) return;
+    st->md->rescaled = 1.0;
+    for (int i = 0; i < st->nv; ++i) {
+        st->v[i].w = v3_scale(st->v[i].w, f);
+        st->v[i].a = v3_scale(st->v[i].a, f);
+        st->v[i].b = v3_scale(st->v[i].b, f);
+    }
+    for (int i = 0; i < st->nextra; ++i) {
+        st->extra[i].w = v3_scale(st->extra[i].w, f);
+        st->extra[i].a = v3_scale(st->extra[i].a, f);
+        st->extra[i].b = v3_scale(st->extra[i].b, f);
+    }
+    for (int i = 0; i < st->nf; ++i) {
+        st->f[i].dist *= f;
+        st->f[i].err *= f;
+    }
+    for (int i = 0; i < st->nlive; ++i) st->key[i] *= f;
+    st->upper *= f;
+    st->estimate *= f;
+    st->lower *= f;
+}
+
+/* The point of D farthest along n (a unit vector to rounding: a face normal
+ * or a blow-up direction), and the upper bound it proves. */
+static int support(epa_state *st, agjk_vec3 n, agjk__vertex *s) {
+    agjk__minkowski_support(st->md, v3_neg(n), s, 1); /* argmin <-n, .> */
+    ++st->support_calls;
+    if (st->md->bad_support) return 0;
+    follow_rescale(st);
+    double h = v3_dot(n, s->w);
+    /* Rounding of the dot product and |n| = 1 +- a few eps, with
+     * |w| <= sqrt(3) max |w_i|. */
+    double up = h + 24.0 * DBL_EPSILON * v3_maxabs(s->w);
+    if (up < st->upper) {
+        st->upper = up;
+        st->estimate = h;
+        st->upper_n = n;
+    }
+    return 1;
+}
+
+/* Plane of the triangle p0 p1 p2: unit normal (right hand), offset, and a
+ * rounding allowance on the offset. The computed normal is off the true one by
+ * an angle of a few eps |e1| |e2| / |e1 x e2| (cancellation in the cross
+ * product of the rounded edges), which moves the offset by that times |p|.
+ * Returns 0 for a triangle without a normal. */
+static int face_plane(agjk_vec3 p0, agjk_vec3 p1, agjk_vec3 p2, agjk_vec3 *n, double *dist,
+                      double *err) {
+    agjk_vec3 e1 = v3_sub(p1, p0), e2 = v3_sub(p2, p0);
+    agjk_vec3 c = v3_cross(e1, e2);
+    double len2 = v3_norm2(c);
+    if (!(len2 > 0.0) || !isfinite(len2)) return 0;
+    double len = sqrt(len2);
+    *n = v3_scale(c, 1.0 / len);
+    *dist = v3_dot(*n, p0);
+    /* |p| <= sqrt(3) max |p_i|; 1 / sin(angle at p0) = |e1| |e2| / |c|
+     * <= (|e1|^2 + |e2|^2) / (2 |c|). */
+    double r = v3_maxabs(p0);
+    if (v3_maxabs(p1) > r) r = v3_maxabs(p1);
+    if (v3_maxabs(p2) > r) r = v3_maxabs(p2);
+    double skew = (v3_norm2(e1) + v3_norm2(e2)) / (2.0 * len);
+    *err = 32.0 * DBL_EPSILON * r * (skew + 1.0);
+    return 1; /* finite: solver units keep coordinates below 2^101 */
+}
+
+static void live_add(epa_state *st, int fi) {
+    st->pos[fi] = st->nlive;
+    st->live[st->nlive] = fi;
+    st->key[st->nlive] = st->f[fi].dist - st->f[fi].err;
+    ++st->nlive;
+}
+
+static void live_remove(epa_state *st, int fi) {
+    int j = st->pos[fi], last = --st->nlive;
+    st->live[j] = st->live[last];
+    st->key[j] = st->key[last];
+    st->pos[st->live[j]] = j;
+}
+
+static void set_face(epa_state *st, int fi, int a, int b, int c, agjk_vec3 n, double dist,
+                     double err) {
+    epa_face *f = &st->f[fi];
+    f->v[0] = a;
+    f->v[1] = b;
+    f->v[2] = c;
+    f->n = n;
+    f->dist = dist;
+    f->err = err;
+    f->alive = 1;
+    f->stamp = 0;
+    f->visible = 0;
+    live_add(st, fi);
+}
+
+/* Whether the point w lies beyond face f, by more than its rounding allowance. */
+static int sees(const epa_face *f, agjk_vec3 w) {
+    return v3_dot(f->n, w) - f->dist > f->err;
+}
+
+/* Distance of p from the affine hull of pts[0..k-1] (k = 1, 2, 3). */
+static double off_hull(const agjk__vertex *pts, int k, agjk_vec3 p) {
+    agjk_vec3 d = v3_sub(p, pts[0].w);
+    if (k == 1) return v3_norm(d);
+    if (k == 2) {
+        agjk_vec3 u = v3_normalize(v3_sub(pts[1].w, pts[0].w));
+        return v3_norm(v3_cross(d, u));
+    }
+    agjk_vec3 n = v3_normalize(v3_cross(v3_sub(pts[1].w, pts[0].w), v3_sub(pts[2].w, pts[0].w)));
+    return fabs(v3_dot(n, d));
+}
+
+/* Directions orthogonal to the affine hull of pts[0..k-1], k = 1, 2, 3. */
+static int hull_normals(const agjk__vertex *pts, int k, agjk_vec3 dirs[3]) {
+    if (k == 1) {
+        dirs[0] = v3(1.0, 0.0, 0.0);
+        dirs[1] = v3(0.0, 1.0, 0.0);
+        dirs[2] = v3(0.0, 0.0, 1.0);
+        return 3;
+    }
+    if (k == 2) {
+        agjk_vec3 u = v3_normalize(v3_sub(pts[1].w, pts[0].w));
+        /* The axis least aligned with u gives a well-conditioned cross product. */
+        agjk_vec3 e = v3(1.0, 0.0, 0.0);
+        if (fabs(u.y) <= fabs(u.x) && fabs(u.y) <= fabs(u.z)) e = v3(0.0, 1.0, 0.0);
+        else if (fabs(u.z) <= fabs(u.x) && fabs(u.z) <= fabs(u.y)) e = v3(0.0, 0.0, 1.0);
+        dirs[0] = v3_normalize(v3_cross(u, e));
+        dirs[1] = v3_cross(u, dirs[0]);
+        return 2;
+    }
+    dirs[0] = v3_normalize(v3_cross(v3_sub(pts[1].w, pts[0].w), v3_sub(pts[2].w, pts[0].w)));
+    return 1;
+}
+
+/* Builds the initial tetrahedron in st->v[0..3] from GJK's simplex, blowing a
+ * point, segment or triangle up by support calls in directions orthogonal to
+ * it (van den Bergen 2003, sec. 4.3.8). Points found on both sides are kept in
+ * st->extra, to be added next. Returns 1 with a tetrahedron, 0 when D is flat
+ * (no volume to rounding) or a support failed. */
+static int blow_up(epa_state *st, const agjk__vertex *simplex, int count, int *flat) {
+    double thr = agjk__epa_floor(st->md);
+    st->nv = 0;
+    *flat = 0;
+    if (count < 1) return 0;
+    for (int i = 0; i < count && st->nv < 4; ++i)
+        if (st->nv == 0 || off_hull(st->v, st->nv, simplex[i].w) > thr) st->v[st->nv++] = simplex[i];
+    while (st->nv < 4) {
+        agjk_vec3 dirs[3];
+        int nd = hull_normals(st->v, st->nv, dirs), added = 0;
+        for (int i = 0; i < nd && !added; ++i) {
+            agjk__vertex plus, minus;
+            if (!support(st, dirs[i], &plus) || !support(st, v3_neg(dirs[i]), &minus)) return 0;
+            thr = agjk__epa_floor(st->md); /* the support calls may have grown the size */
+            double op = off_hull(st->v, st->nv, plus.w), om = off_hull(st->v, st->nv, minus.w);
+            if (op <= thr && om <= thr) continue; /* flat in this direction */
+            const agjk__vertex *best = op >= om ? &plus : &minus;
+            const agjk__vertex *other = op >= om ? &minus : &plus;
+            st->v[st->nv++] = *best;
+            if ((op >= om ? om : op) > thr && st->nextra < 4) st->extra[st->nextra++] = *other;
+            added = 1;
+        }
+        if (!added) {
+            *flat = 1;
+            return 0;
+        }
+    }
+    return 1;
+}
+
+/* Faces of the tetrahedron st->v[0..3], outward, with their adjacency. */
+static int tetrahedron_faces(epa_state *st) {
+    agjk_vec3 p0 = st->v[0].w;
+    double det = v3_dot(v3_cross(v3_sub(st->v[1].w, p0), v3_sub(st->v[2].w, p0)),
+                        v3_sub(st->v[3].w, p0));
+    if (!(det != 0.0) || !isfinite(det)) return 0;
+    if (det < 0.0) { /* make v3 lie above the triangle v0 v1 v2 */
+        agjk__vertex t = st->v[1];
+        st->v[1] = st->v[2];
+        st->v[2] = t;
+    }
+    /* Face i holds the edges tri[i][e] -> tri[i][e + 1]; adj[i][e] is the face
+     * holding the same edge reversed. */
+    static const int tri[4][3] = {{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {2, 0, 3}};
+    static const int adj[4][3] = {{3, 2, 1}, {0, 2, 3}, {0, 3, 1}, {0, 1, 2}};
+    static const int adje[4][3] = {{0, 0, 0}, {2, 2, 1}, {1, 2, 1}, {0, 2, 1}};
+    st->nf = 4;
+    st->nfree = 0;
+    st->nlive = 0;
+    for (int i = 0; i < 4; ++i) {
+        agjk_vec3 n;
+        double d, err;
+        if (!face_plane(st->v[tri[i][0]].w, st->v[tri[i][1]].w, st->v[tri[i][2]].w, &n, &d, &err))
+            return 0;
+        set_face(st, i, tri[i][0], tri[i][1], tri[i][2], n, d, err);
+        for (int e = 0; e < 3; ++e) {
+            st->f[i].adj[e] = adj[i][e];
+            st->f[i].adje[e] = adje[i][e];
+        }
+    }
+    return 1;
+}
+
+/* Adds s to the polytope, seen from face f0 (sees(f0, s)): removes the faces
+ * that see s (flood fill from f0 across edges) and joins s to the horizon.
+ * Checks everything first; returns 0 with the polytope unchanged when the
+ * store is full or the result would not be a closed surface of proper
+ * triangles (rounding can make the visible region pinched). */
+static int insert(epa_state *st, const agjk__vertex *s, int f0) {
+    /* A simple horizon cycle visits each vertex at most once: MAX_VERTICES edges. */
+    int stack[MAX_FACES], visible[MAX_FACES];
+    int hu[MAX_VERTICES], hv[MAX_VERTICES], hg[MAX_VERTICES], hj[MAX_VERTICES];
+    int nstack = 0, nvis = 0, nh = 0;
+    if (st->nv >= MAX_VERTICES) return 0;
+    int stamp = ++st->stamp;
+    st->f[f0].stamp = stamp;
+    st->f[f0].visible = 1;
+    stack[nstack++] = f0;
+    while (nstack > 0) {
+        int fi = stack[--nstack];
+        visible[nvis++] = fi;
+        for (int e = 0; e < 3; ++e) {
+            epa_face *g = &st->f[st->f[fi].adj[e]];
+            if (g->stamp != stamp) {
+                g->stamp = stamp;
+                g->visible = sees(g, s->w);
+                if (g->visible) stack[nstack++] = st->f[fi].adj[e];
+            }
+            if (!g->visible) {
+                if (nh == MAX_VERTICES) return 0;
+                hu[nh] = st->f[fi].v[e];
+                hv[nh] = st->f[fi].v[(e + 1) % 3];
+                hg[nh] = st->f[fi].adj[e];
+                hj[nh] = st->f[fi].adje[e];
+                ++nh;
+            }
+        }
+    }
+    /* The horizon must be one simple cycle (every vertex starts one edge),
+     * the store must hold the new faces, and they need normals. */
+    int next[MAX_VERTICES];
+    agjk_vec3 hn[MAX_VERTICES];
+    double hd[MAX_VERTICES], he[MAX_VERTICES];
+    int ok = nh <= st->nfree + nvis + (MAX_FACES - st->nf), marked = 0;
+    while (ok && marked < nh) {
+        int u = hu[marked];
+        if (st->start_of[u] >= 0) break; /* u starts two edges: pinched */
+        st->start_of[u] = marked;
+        ok = face_plane(st->v[u].w, st->v[hv[marked]].w, s->w, &hn[marked], &hd[marked],
+                        &he[marked]);
+        ++marked;
+    }
+    ok = ok && marked == nh;
+    for (int i = 0; ok && i < nh; ++i) {
+        next[i] = st->start_of[hv[i]];
+        ok = next[i] >= 0;
+    }
+    for (int i = 0; i < marked; ++i) st->start_of[hu[i]] = -1;
+    if (!ok) return 0;
+    /* Commit. */
+    int si = st->nv;
+    st->v[st->nv++] = *s;
+    for (int i = 0; i < nvis; ++i) {
+        st->f[visible[i]].alive = 0;
+        live_remove(st, visible[i]);
+        st->free_faces[st->nfree++] = visible[i];
+    }
+    int slot[MAX_VERTICES];
+    for (int i = 0; i < nh; ++i) slot[i] = st->nfree > 0 ? st->free_faces[--st->nfree] : st->nf++;
+    for (int i = 0; i < nh; ++i) {
+        /* face i: edge 0 on the horizon (twin in the kept face hg[i]), edge 1
+         * shared with face next[i] (its edge 2), edge 2 with the face before */
+        int fi = slot[i];
+        set_face(st, fi, hu[i], hv[i], si, hn[i], hd[i], he[i]);
+        epa_face *f = &st->f[fi];
+        f->adj[0] = hg[i];
+        f->adje[0] = hj[i];
+        f->adj[1] = slot[next[i]];
+        f->adje[1] = 2;
+        f->adje[2] = 1;
+        st->f[slot[next[i]]].adj[2] = fi;
+        st->f[hg[i]].adj[hj[i]] = fi;
+        st->f[hg[i]].adje[hj[i]] = 0;
+    }
+    return 1;
+}
+
+/* The face whose plane is nearest to the origin (after its rounding
+ * allowance): EPA expands it. Also the certified lower bound the polytope
+ * proves, min over faces of dist - err, or -inf if it proves none (some face
+ * may not have the origin strictly inside). */
+static int nearest_face(const epa_state *st, double *proved) {
+    int best = 0;
+    double low = st->key[0];
+    for (int i = 1; i < st->nlive; ++i)
+        if (st->key[i] < low) {
+            low = st->key[i];
+            best = i;
+        }
+    *proved = low > 0.0 ? low : -INFINITY;
+    return st->live[best];
+}
+
+/* Whether [lower, upper] (depth, with vertex noise) meets the target. */
+static int width_met(const epa_state *st, const agjk__epa_input *in, double noise,
+                     double floor) {
+    double lo = st->lower - 2.0 * noise, up = st->upper + 2.0 * noise;
+    if (!(up < INFINITY) || !(lo > -INFINITY)) return 0;
+    double margin = in->margin * st->md->scale;
+    double target = agjk__epa_target(in->relative, in->tolerance, st->md->scale, -(up + margin),
+                                     -(lo + margin), in->relative ? 0.0 : floor);
+    return up - lo <= target;
+}
+
+/* Barycentric coordinates (unnormalised, l[i] opposite vertex i) of the
+ * origin's projection on face f's plane; returns how far outside the
+ * triangle it falls (0 inside), relative to the triangle's size. */
+static double foot_weights(const epa_state *st, const epa_face *f, double l[3]) {
+    agjk_vec3 q = v3_scale(f->n, f->dist);
+    double sum = 0.0, worst = 0.0;
+    for (int i = 0; i < 3; ++i) {
+        agjk_vec3 p1 = st->v[f->v[(i + 1) % 3]].w, p2 = st->v[f->v[(i + 2) % 3]].w;
+        l[i] = v3_dot(v3_cross(v3_sub(p1, q), v3_sub(p2, q)), f->n);
+        sum += fabs(l[i]);
+        if (l[i] < worst) worst = l[i];
+    }
+    return sum > 0.0 ? -worst / sum : INFINITY;
+}
+
+/* Deepest points of the cores: the origin's projection on the nearest face's
+ * plane, in barycentric coordinates. A facet of D made of several coplanar
+ * triangles (boxes) may have its nearest triangle, by rounding, not the one
+ * holding the projection: among the faces no farther than the upper bound,
+ * the one holding its projection best is taken (clamped onto it). */
+static void face_witness(const epa_state *st, int best, agjk__epa_output *out) {
+    double l[3];
+    double outside = foot_weights(st, &st->f[best], l);
+    for (int i = 0; i < st->nf && outside > 0.0; ++i) {
+        const epa_face *f = &st->f[i];
+        if (!f->alive || i == best || f->dist > st->upper) continue;
+        double m[3];
+        double o = foot_weights(st, f, m);
+        if (o < outside) {
+            outside = o;
+            best = i;
+        }
+    }
+    const epa_face *f = &st->f[best];
+    foot_weights(st, f, l);
+    double sum = 0.0;
+    for (int i = 0; i < 3; ++i) {
+        if (!(l[i] > 0.0)) l[i] = 0.0;
+        sum += l[i];
+    }
+    if (!(sum > 0.0) || !isfinite(sum)) {
+        l[0] = l[1] = l[2] = 1.0;
+        sum = 3.0;
+    }
+    out->a = v3(0.0, 0.0, 0.0);
+    out->b = v3(0.0, 0.0, 0.0);
+    for (int i = 0; i < 3; ++i) {
+        out->a = v3_add(out->a, v3_scale(st->v[f->v[i]].a, l[i] / sum));
+        out->b = v3_add(out->b, v3_scale(st->v[f->v[i]].b, l[i] / sum));
+    }
+    out->has_witness = 1;
+}
+
+void agjk__epa(agjk__minkowski *md, const agjk__epa_input *in, agjk__epa_output *out) {
+    epa_state st;
+    st.md = md;
+    st.nv = 0;
+    st.nf = 0;
+    st.nfree = 0;
+    st.nlive = 0;
+    st.stamp = 0;
+    st.upper = INFINITY;
+    st.estimate = INFINITY;
+    st.upper_n = v3(0.0, 0.0, 0.0);
+    st.lower = -in->core_distance_upper; /* GJK's bound: depth >= -distance */
+    st.nextra = 0;
+    st.support_calls = 0;
+    for (int i = 0; i < MAX_VERTICES; ++i) st.start_of[i] = -1;
+    out->has_witness = 0;
+    out->iterations = 0;
+    out->converged = 0;
+
+    int flat = 0;
+    int ok = blow_up(&st, in->simplex, in->count, &flat) && tetrahedron_faces(&st);
+    if (md->bad_support) {
+        out->outcome = AGJK__EPA_BAD_SUPPORT;
+    } else if (!ok) {
+        out->outcome = flat ? AGJK__EPA_FLAT : AGJK__EPA_DEGENERATE;
+    } else {
+        for (int i = 0; i < st.nextra; ++i)
+            for (int fi = 0; fi < st.nf; ++fi)
+                if (st.f[fi].alive && sees(&st.f[fi], st.extra[i].w)) {
+                    insert(&st, &st.extra[i], fi);
+                    break;
+                }
+        out->outcome = AGJK__EPA_CAP;
+        int best = -1;
+        for (int k = 0;; ++k) {
+            double proved;
+            best = nearest_face(&st, &proved);
+            if (proved > st.lower) st.lower = proved;
+            if (width_met(&st, in, agjk__epa_noise(md), agjk__epa_floor(md))) {
+                out->outcome = AGJK__EPA_CONVERGED;
+                break;
+            }
+            if (k >= in->max_iterations) break;
+            const epa_face *f = &st.f[best];
+            agjk__vertex s;
+            ++out->iterations;
+            if (!support(&st, f->n, &s)) {
+                out->outcome = AGJK__EPA_BAD_SUPPORT;
+                break;
+            }
+            f = &st.f[best]; /* (dist may have been rescaled) */
+            if (!sees(f, s.w)) {
+                /* The face lies on D's boundary to rounding: the bounds are as
+                 * tight as this polytope can make them. */
+                out->outcome = width_met(&st, in, agjk__epa_noise(md), agjk__epa_floor(md))
+                                   ? AGJK__EPA_CONVERGED : AGJK__EPA_NO_PROGRESS;
+                break;
+            }
+            if (st.nv >= MAX_VERTICES) {
+                out->outcome = AGJK__EPA_FULL;
+                break;
+            }
+            if (!insert(&st, &s, best)) {
+                out->outcome = AGJK__EPA_DEGENERATE;
+                break;
+            }
+        }
+        if (best >= 0) face_witness(&st, best, out);
+        if (!(st.upper < INFINITY) && best >= 0) {
+            /* No support value yet (cap before the first call): take one. */
+            agjk__vertex s;
+            if (!support(&st, st.f[best].n, &s)) out->outcome = AGJK__EPA_BAD_SUPPORT;
+        }
+    }
+    /* Twice the solver's noise scale on each end: a support value and a face
+     * offset combine points of both shapes, and a verdict at the edge of the
+     * noise model (magnitudes 1e15 apart, found by fuzzing) must not flip. */
+    double noise = 2.0 * agjk__epa_noise(md);
+    out->upper = st.upper + noise;
+    out->lower = st.lower - noise;
+    if (out->upper < out->lower) {
+        /* Two certificates that contradict each other can only do so by
+         * rounding beyond the allowances (extreme magnitude ranges): keep
+         * both ends, no verdict from a zero-width interval. */
+        double t = out->upper;
+        out->upper = out->lower;
+        out->lower = t;
+    }
+    out->estimate = st.estimate;
+    if (out->estimate > out->upper) out->estimate = out->upper;
+    if (out->estimate < out->lower) out->estimate = out->lower;
+    out->normal = st.upper_n;
+    out->converged = out->outcome != AGJK__EPA_BAD_SUPPORT &&
+                     width_met(&st, in, agjk__epa_noise(md), agjk__epa_floor(md));
+    if (out->converged && out->outcome != AGJK__EPA_FLAT) out->outcome = AGJK__EPA_CONVERGED;
+    out->support_calls = st.support_calls;
+}

@@ -1,0 +1,196 @@
+/* SPDX-License-Identifier: MIT */
+/* agjk_signed_distance: GJK on the cores, then EPA when they overlap; margins
+ * added analytically; the certified interval in the caller's units. */
+#include <string.h>
+
+#include "agjk/penetration.h"
+#include "epa.h"
+#include "query_setup.h"
+
+static agjk_vec3 to_world(const agjk_pose *pose, agjk_vec3 p) {
+    return v3_add(m3_mul(&pose->rotation[0][0], p), pose->translation);
+}
+
+/* What EPA needs from GJK, in one place (the solver's internals may change):
+ * the outcome, the final iterate with its certified core-distance interval,
+ * and the final simplex. */
+typedef struct gjk_summary {
+    int bad_support;
+    int intersecting;     /* the origin is in the final simplex */
+    int converged;        /* the tolerance was met (absolute: or its floor) */
+    double core_upper;    /* certified upper bound on the core distance (solver units) */
+    double core_lower;    /* certified lower bound on the core distance (solver units) */
+    agjk_vec3 x;          /* final iterate */
+    agjk_vec3 a, b;       /* its points on A and B */
+    const agjk__vertex *simplex;
+    int count;
+    int iterations, support_calls;
+} gjk_summary;
+
+static void run_gjk(agjk__minkowski *md, agjk__solve_input *in, agjk__solve_output *out,
+                    gjk_summary *g) {
+    in->want_witness = 1; /* EPA's degenerate cases use GJK's points */
+    agjk__solve(md, in, out);
+    g->bad_support = out->outcome == AGJK__BAD_SUPPORT;
+    g->intersecting = out->outcome == AGJK__INTERSECTING;
+    g->converged = out->outcome == AGJK__CONVERGED ||
+                   (out->outcome == AGJK__AT_FLOOR && !in->relative);
+    g->x = out->x;
+    g->a = out->a;
+    g->b = out->b;
+    g->simplex = out->simplex;
+    g->count = out->simplex_count;
+    g->iterations = out->iterations;
+    g->support_calls = out->support_calls;
+    double core = v3_norm(out->x);
+    if (g->intersecting) {
+        g->core_upper = out->noise;
+        g->core_lower = -INFINITY;
+        return;
+    }
+    /* As agjk_distance: the support plane and eq. 13 of Montaut et al. */
+    double gap = out->gap_valid && out->gap > 0.0 ? out->gap : 0.0;
+    double lower = core - sqrt(gap);
+    if (core > 0.0) {
+        double plane = core - gap / (2.0 * core);
+        if (plane > lower) lower = plane;
+    }
+    /* The rounding of x widens both ends, as in agjk_distance (query.c). */
+    g->core_lower = lower - 2.0 * out->noise;
+    g->core_upper = core + 2.0 * out->noise;
+}
+
+/* A support callback returned a bad point: nothing computed, a zeroed result. */
+static agjk_status invalid(agjk_signed_result *r) {
+    memset(r, 0, sizeof *r);
+    return r->status = AGJK_STATUS_INVALID_INPUT;
+}
+
+/* Back in the caller's units (a power of two, exact) the interval may land
+ * among subnormal numbers, where the product rounds: widen it by one ulp
+ * outwards whenever the units changed. */
+static void widen_after_rescale(agjk_signed_result *r, double scale) {
+    if (scale == 1.0) return;
+    r->lower = nextafter(r->lower, -INFINITY);
+    r->upper = nextafter(r->upper, INFINITY);
+}
+
+static agjk_status finish(agjk_signed_result *r, int converged) {
+    if (!converged) return r->status = AGJK_STATUS_NOT_CONVERGED;
+    if (r->lower > 0.0) return r->status = AGJK_STATUS_SEPARATED;
+    if (r->upper < 0.0) return r->status = AGJK_STATUS_INTERSECTING;
+    return r->status = AGJK_STATUS_CONTACT_WITHIN_TOLERANCE;
+}
+
+/* The answer when the cores are certified disjoint: the GJK distance, minus
+ * the margins (as agjk_distance, with the margins subtracted). */
+static agjk_status separated_cores(agjk_signed_result *result, const gjk_summary *g,
+                                   const agjk__minkowski *md, const agjk_pose *pose_a,
+                                   double margin_a, double margin_b, double margin, int witness,
+                                   int converged) {
+    double inv = 1.0 / md->scale;
+    double core = v3_norm(g->x);
+    result->signed_distance = core * inv - margin;
+    result->upper = g->core_upper * inv - margin;
+    result->lower = g->core_lower * inv - margin;
+    result->hint_a = md->hint_a;
+    result->hint_b = md->hint_b;
+    agjk_vec3 n = v3_normalize(v3_neg(g->x));
+    result->normal = m3_mul(&pose_a->rotation[0][0], n);
+    if (witness) {
+        result->witness_a = to_world(pose_a, v3_add(v3_scale(g->a, inv), v3_scale(n, margin_a)));
+        result->witness_b = to_world(pose_a, v3_sub(v3_scale(g->b, inv), v3_scale(n, margin_b)));
+    }
+    widen_after_rescale(result, md->scale);
+    return finish(result, converged);
+}
+
+agjk_status agjk_signed_distance(const agjk_shape *a, const agjk_pose *pose_a,
+                                 const agjk_shape *b, const agjk_pose *pose_b,
+                                 const agjk_options *options, agjk_signed_result *result) {
+    if (!result) return AGJK_STATUS_INVALID_INPUT;
+    memset(result, 0, sizeof *result);
+    result->status = AGJK_STATUS_INVALID_INPUT;
+    agjk_options opts;
+    agjk__minkowski md;
+    agjk__solve_input in;
+    if (!agjk__query_prepare(a, pose_a, b, pose_b, options, &opts, &md, &in))
+        return result->status;
+    int witness = (opts.compute & AGJK_COMPUTE_WITNESS) != 0;
+    /* GJK runs on the cores: the margins (caller's units, md.scale is 1 here)
+     * are added to the answer analytically, so that the solver neither stops
+     * early when the cores come closer than the margins nor loses the simplex. */
+    double margin_a = md.margin_a, margin_b = md.margin_b, margin = md.margin;
+    md.margin_a = md.margin_b = md.margin = 0.0;
+
+    agjk__solve_output out;
+    gjk_summary g;
+    run_gjk(&md, &in, &out, &g);
+    result->gjk_iterations = g.iterations;
+    result->support_calls = g.support_calls;
+    result->hint_a = md.hint_a;
+    result->hint_b = md.hint_b;
+    if (g.bad_support) return invalid(result);
+
+    /* Cores certified disjoint: the GJK distance minus the margins. GJK's
+     * tolerance bounds the error relative to the core distance; with margins
+     * |signed distance| may be larger (deep overlap of the margins), so the
+     * width is checked against the signed distance and GJK resumed from its
+     * last iterate with a proportionally tighter tolerance (twice at most). */
+    for (int round = 0; !g.intersecting && g.core_lower > 0.0; ++round) {
+        double lo = g.core_lower - margin * md.scale, hi = g.core_upper - margin * md.scale;
+        double target = agjk__epa_target(in.relative, opts.tolerance, md.scale, lo, hi,
+                                         in.relative ? 0.0 : agjk__epa_floor(&md));
+        /* Without margins, exactly agjk_distance's verdict; with margins, the
+         * certified width decides. */
+        int converged = margin == 0.0 ? g.converged : hi - lo <= target;
+        if (converged || margin == 0.0 || round == 2)
+            return separated_cores(result, &g, &md, pose_a, margin_a, margin_b, margin, witness,
+                                   converged);
+        in.tolerance *= 0.25 * target / (hi - lo);
+        if (!(in.tolerance > 0.0)) in.tolerance = DBL_MIN;
+        in.x0 = g.x; /* solver units: the scale is already set */
+        run_gjk(&md, &in, &out, &g);
+        result->gjk_iterations += g.iterations;
+        result->support_calls += g.support_calls;
+        if (g.bad_support) return invalid(result);
+    }
+
+    /* The cores overlap or touch: EPA from GJK's simplex. */
+    agjk__epa_input ein;
+    ein.simplex = g.simplex;
+    ein.count = g.count;
+    ein.relative = in.relative;
+    ein.tolerance = opts.tolerance;
+    ein.margin = margin;
+    ein.core_distance_upper = g.core_upper;
+    ein.max_iterations = opts.max_iterations;
+    agjk__epa_output eout;
+    agjk__epa(&md, &ein, &eout);
+    result->epa_iterations = eout.iterations;
+    result->support_calls += eout.support_calls;
+    result->hint_a = md.hint_a;
+    result->hint_b = md.hint_b;
+    if (eout.outcome == AGJK__EPA_BAD_SUPPORT) return invalid(result);
+    double inv = 1.0 / md.scale; /* EPA may have lowered the scale */
+    result->lower = -eout.upper * inv - margin;
+    result->upper = -eout.lower * inv - margin;
+    result->signed_distance = -eout.estimate * inv - margin;
+    agjk_vec3 n = eout.normal;
+    result->normal = m3_mul(&pose_a->rotation[0][0], n);
+    if (witness) {
+        agjk_vec3 wa, wb;
+        if (eout.has_witness) {
+            wa = v3_add(v3_scale(eout.a, inv), v3_scale(n, margin_a));
+            wb = v3_sub(v3_scale(eout.b, inv), v3_scale(n, margin_b));
+        } else {
+            /* Flat or degenerate D: the cores touch at GJK's point. */
+            wa = v3_add(v3_scale(g.a, inv), v3_scale(n, margin_a));
+            wb = v3_sub(v3_scale(g.b, inv), v3_scale(n, margin_b));
+        }
+        result->witness_a = to_world(pose_a, wa);
+        result->witness_b = to_world(pose_a, wb);
+    }
+    widen_after_rescale(result, md.scale);
+    return finish(result, eout.converged);
+}
