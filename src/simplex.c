@@ -246,14 +246,19 @@ unsigned agjk__simplex_project(const agjk_vec3 *p, int n, double lambda[4], agjk
  * lies on a face containing a: the faces opposite a never need testing
  * (Gilbert, Johnson and Keerthi 1988; the Voronoi-region form of Ericson,
  * "Real-Time Collision Detection", 2005, Sec. 5.1.5-5.1.6). The fast path
- * below looks only at the faces through a, measured from a.
+ * below looks only at the faces through a, with the dot products of the
+ * edges e_i = w_i - a and of a with them (Johnson's sub-algorithm in Gram
+ * form): on a face (a, w_i, w_j) the origin's foot is
+ * a + (l_i e_i + l_j e_j) / det with det = |e_i|^2 |e_j|^2 - <e_i, e_j>^2.
  *
  * It trusts no region test, though: a candidate p on a face S with positive
  * barycentric weights is accepted only when <p, q> >= |p|^2 (up to rounding)
  * for every vertex q outside S, the optimality (KKT) condition of the
  * projection onto the whole hull: the plane through p normal to p then
- * supports the hull. When no candidate passes, when the simplex is degenerate
- * or ill-conditioned at a, or when the origin may be inside the tetrahedron,
+ * supports the hull. No volume is ever divided by, so a flat tetrahedron
+ * needs no special case; a face is used only when its angle at a is well
+ * away from 0 or pi. When no candidate passes, when the only candidate is an
+ * ill-conditioned face, or when the origin may be inside the tetrahedron,
  * the exhaustive projection above decides. So the answer never rests on the
  * GJK assumption (which momentum directions or rounding can break), only the
  * speed does. */
@@ -264,182 +269,187 @@ unsigned agjk__simplex_project(const agjk_vec3 *p, int n, double lambda[4], agjk
  * rounding error the solver already attributes to its iterate. */
 #define OPTIMALITY_RELATIVE (8.0 * DBL_EPSILON)
 
-/* Smallest sin^2 of the angle at a for which the fast path computes a foot
- * and weights from the edges at a (see face_candidate). */
+/* Smallest sin^2 of the angle at a of a face whose interior the fast path
+ * computes: the Gram-form weights lose about eps / sin^2 (relative), so at
+ * most ~100 ulps here; thinner faces go to the exhaustive projection, which
+ * measures from the shortest edges. */
 #define WELL_CONDITIONED 1e-2
 
-/* The KKT test: <p, q> - |p|^2 >= -OPTIMALITY_RELATIVE |p| |q| for every
- * vertex q of w[0..n-1] outside the support mask `keep`. */
-static inline int optimal(const agjk_vec3 *w, int n, unsigned keep, agjk_vec3 p) {
-    double pp = v3_norm2(p);
-    for (int i = 0; i < n; ++i) {
-        if (keep & (1u << i)) continue;
-        double m = v3_dot(p, w[i]) - pp;
-        if (m >= 0.0) continue;
-        if (m * m > OPTIMALITY_RELATIVE * OPTIMALITY_RELATIVE * pp * v3_norm2(w[i])) return 0;
-    }
-    return 1;
+/* The KKT test for one vertex q outside the candidate's face (pp = |p|^2):
+ * <p, q> - |p|^2 >= -OPTIMALITY_RELATIVE |p| |q|. */
+static int supports(agjk_vec3 p, double pp, agjk_vec3 q) {
+    double m = v3_dot(p, q) - pp;
+    return m >= 0.0 || m * m <= OPTIMALITY_RELATIVE * OPTIMALITY_RELATIVE * pp * v3_norm2(q);
 }
 
 /* Writes weights for a support set of up to three vertices (j, k may repeat
- * i with weight 0 when unused). lambda always has four entries. */
-static inline void put(double lambda[4], int i, double wi, int j, double wj, int k, double wk) {
+ * i with the same weight when unused). lambda always has four entries. */
+static void put(double lambda[4], int i, double wi, int j, double wj, int k, double wk) {
     lambda[0] = lambda[1] = lambda[2] = lambda[3] = 0.0;
     lambda[k] = wk;
     lambda[j] = wj;
     lambda[i] = wi;
 }
 
-/* Candidate on the edge a-b, a = w[ia], b = w[ib], u = b - a, au = <a, u>:
- * the foot a + t u, t = -au / |u|^2, when 0 < t < 1 and it passes the KKT
- * test. Returns the support mask, or 0. */
-static inline unsigned edge_candidate(const agjk_vec3 *w, int n, int ia, int ib, agjk_vec3 u, double au,
-                               double lambda[4], agjk_vec3 *point) {
-    if (!(au < 0.0)) return 0u;
-    double t = -au / v3_norm2(u);
-    if (!(t > 0.0 && t < 1.0)) return 0u; /* also rejects u = 0 */
-    agjk_vec3 p = v3_lerp2(w[ia], 1.0 - t, w[ib], t);
-    unsigned mask = (1u << ia) | (1u << ib);
-    if (n > 2 && !optimal(w, n, mask, p)) return 0u;
-    put(lambda, ia, 1.0 - t, ib, t, ib, t);
-    *point = p;
-    return mask;
+/* The vertex a = w[n-1] alone, once its KKT test (<a, e_i> >= 0) passed. */
+static unsigned vertex_output(const agjk_vec3 *w, int n, double lambda[4], agjk_vec3 *point) {
+    put(lambda, n - 1, 1.0, n - 1, 1.0, n - 1, 1.0);
+    *point = w[n - 1];
+    return 1u << (n - 1);
 }
 
-/* Candidate on the triangle a, b, c = w[n-1], w[ib], w[ic] of edges
- * u = e[ib] = b - a, v = e[ic] = c - a, normal *nrm = u x v of squared norm
- * nn > 0, and uv2 = |u|^2 |v|^2: its interior, else the edges a-b, a-c, else
- * the vertex a, the first that passes the KKT test. Returns the support
- * mask, or 0. */
-static unsigned face_candidate(const agjk_vec3 *w, int n, int ib, int ic, const agjk_vec3 *e,
-                               const agjk_vec3 *nrm, double nn, double uv2, double lambda[4],
-                               agjk_vec3 *point) {
+/* Candidate on the edge a-b, a = w[n-1], b = w[ib], with ra = <a, b - a> and
+ * gbb = |b - a|^2: the foot a + t (b - a), t = -ra / gbb, when 0 < t < 1 and
+ * it passes the KKT test for w[o1], w[o2] (indices < 0: none). Returns the
+ * support mask, or 0. */
+static unsigned edge_output(const agjk_vec3 *w, int n, int ib, double ra, double gbb, int o1,
+                            int o2, double lambda[4], agjk_vec3 *point) {
     int ia = n - 1;
-    agjk_vec3 a = w[ia], u = e[ib], v = e[ic], nv = *nrm;
-    /* The foot f of the origin on the plane is a + (lb u + lc v) / |n|^2 with
-     * lb = <-a, v x n> and lc = <-a, n x u> (signed areas measured from a:
-     * the normal component of -a drops out). */
-    double lb = -v3_dot(a, v3_cross(v, nv));
-    double lc = -v3_dot(a, v3_cross(nv, u));
-    double la = nn - lb - lc;
-    if (lb > 0.0 && lc > 0.0 && la > 0.0) {
-        /* u x v carries an error of a few ulps of |u| |v|: with a small angle
-         * at a, the foot and weights would be far less accurate than the
-         * exhaustive projection's (which measures from the shortest edges). */
-        if (!(nn > WELL_CONDITIONED * uv2)) return 0u;
-        double inv = 1.0 / nn;
-        double wa = la * inv, wb = lb * inv, wc = lc * inv;
-        agjk_vec3 f = v3_scale(nv, v3_dot(nv, a) * inv);
-        if (!(wa > 0.0 && wb > 0.0 && wc > 0.0)) return 0u;
-        if (n == 4) { /* the KKT test for the fourth vertex, as in optimal() */
-            agjk_vec3 q = w[3 - ib - ic];
-            double pp = v3_norm2(f), m = v3_dot(f, q) - pp;
-            if (m < 0.0 && m * m > OPTIMALITY_RELATIVE * OPTIMALITY_RELATIVE * pp * v3_norm2(q))
-                return 0u;
-        }
-        put(lambda, ia, wa, ib, wb, ic, wc);
-        *point = f;
-        return (1u << ia) | (1u << ib) | (1u << ic);
-    }
-    /* Outside the triangle: its boundary through a (the edge b-c belongs to
-     * the previous simplex, which held the previous, farther iterate). */
-    double au = v3_dot(a, u), av = v3_dot(a, v);
-    unsigned mask = 0u;
-    if (lc <= 0.0) mask = edge_candidate(w, n, ia, ib, u, au, lambda, point);
-    if (!mask && lb <= 0.0) mask = edge_candidate(w, n, ia, ic, v, av, lambda, point);
-    if (!mask && au >= 0.0 && av >= 0.0 && optimal(w, n, 1u << ia, a)) {
-        put(lambda, ia, 1.0, ia, 1.0, ia, 1.0);
-        *point = a;
-        mask = 1u << ia;
-    }
-    return mask;
+    double t = -ra / gbb;
+    if (!(t > 0.0 && t < 1.0)) return 0u; /* also rejects gbb = 0 */
+    agjk_vec3 p = v3_lerp2(w[ia], 1.0 - t, w[ib], t);
+    double pp = v3_norm2(p);
+    if ((o1 >= 0 && !supports(p, pp, w[o1])) || (o2 >= 0 && !supports(p, pp, w[o2]))) return 0u;
+    put(lambda, ia, 1.0 - t, ib, t, ib, t);
+    *point = p;
+    return (1u << ia) | (1u << ib);
+}
+
+/* Candidate in the face (a, w[ib], w[ic]), a = w[n-1], whose Gram weights
+ * lb, lc, la (times det > 0) are positive: the foot from the normal
+ * u x v, u = w[ib] - a, v = w[ic] - a (accurate even when the foot is much
+ * closer to the origin than a), if it passes the KKT test for w[o] (o < 0:
+ * none). Returns the support mask, or 0. */
+static unsigned face_output(const agjk_vec3 *w, int n, int ib, int ic, double det, double lb,
+                            double lc, double la, int o, double lambda[4], agjk_vec3 *point) {
+    int ia = n - 1;
+    agjk_vec3 a = w[ia];
+    agjk_vec3 nrm = v3_cross(v3_sub(w[ib], a), v3_sub(w[ic], a));
+    agjk_vec3 f = v3_scale(nrm, v3_dot(nrm, a) / v3_norm2(nrm));
+    double inv = 1.0 / det;
+    double wa = la * inv, wb = lb * inv, wc = lc * inv;
+    if (!(wa > 0.0 && wb > 0.0 && wc > 0.0)) return 0u;
+    if (o >= 0 && !supports(f, v3_norm2(f), w[o])) return 0u;
+    put(lambda, ia, wa, ib, wb, ic, wc);
+    *point = f;
+    return (1u << ia) | (1u << ib) | (1u << ic);
 }
 
 static unsigned gjk_segment(const agjk_vec3 *w, double lambda[4], agjk_vec3 *point) {
-    agjk_vec3 a = w[1], u = v3_sub(w[0], a);
-    double au = v3_dot(a, u);
-    if (au >= 0.0) { /* <a, b - a> >= 0: the KKT condition of the vertex a */
-        put(lambda, 1, 1.0, 1, 1.0, 1, 1.0);
-        *point = a;
-        return 2u;
-    }
-    return edge_candidate(w, 2, 1, 0, u, au, lambda, point);
+    agjk_vec3 a = w[1], b = w[0], u = v3_sub(b, a);
+    double ra = v3_dot(a, u);
+    if (ra >= 0.0) return vertex_output(w, 2, lambda, point); /* <a, b - a> >= 0 */
+    double t = -ra / v3_norm2(u); /* as edge_output, with no vertex outside */
+    if (!(t > 0.0 && t < 1.0)) return 0u;
+    put(lambda, 1, 1.0 - t, 0, t, 0, t);
+    *point = v3_lerp2(a, 1.0 - t, b, t);
+    return 3u;
 }
 
 static unsigned gjk_triangle(const agjk_vec3 *w, double lambda[4], agjk_vec3 *point) {
-    agjk_vec3 a = w[2];
-    agjk_vec3 e[2] = {v3_sub(w[0], a), v3_sub(w[1], a)};
-    agjk_vec3 nrm = v3_cross(e[0], e[1]);
-    double uv2 = v3_norm2(e[0]) * v3_norm2(e[1]), nn = v3_norm2(nrm);
-    if (!(nn > DEGENERATE_RELATIVE * DEGENERATE_RELATIVE * uv2)) return 0u;
-    return face_candidate(w, 3, 0, 1, e, &nrm, nn, uv2, lambda, point);
+    agjk_vec3 a = w[2], u = v3_sub(w[0], a), v = v3_sub(w[1], a);
+    double ru = v3_dot(a, u), rv = v3_dot(a, v);
+    if (ru >= 0.0 && rv >= 0.0) return vertex_output(w, 3, lambda, point);
+    double uu = v3_norm2(u), vv = v3_norm2(v), uv = v3_dot(u, v);
+    double det = uu * vv - uv * uv;
+    double lb = rv * uv - ru * vv, lc = ru * uv - rv * uu, la = det - lb - lc;
+    if (lb > 0.0 && lc > 0.0 && la > 0.0) {
+        if (!(det > WELL_CONDITIONED * uu * vv)) return 0u;
+        return face_output(w, 3, 0, 1, det, lb, lc, la, -1, lambda, point);
+    }
+    /* Outside the triangle: on its edges through a (the edge b-c belongs to
+     * the previous simplex, which held the previous, farther iterate); first
+     * the one beyond whose line the foot lies. */
+    unsigned mask = 0u;
+    if (lc <= 0.0) mask = edge_output(w, 3, 0, ru, uu, 1, -1, lambda, point);
+    if (!mask) mask = edge_output(w, 3, 1, rv, vv, 0, -1, lambda, point);
+    if (!mask && lc > 0.0) mask = edge_output(w, 3, 0, ru, uu, 1, -1, lambda, point);
+    return mask;
+}
+
+/* In the tetrahedron (a = w[3], w0, w1, w2) with e_i = w_i - a, g_ij =
+ * <e_i, e_j> and r_i = <a, e_i>: the face (a, w_i, w_j), k the third index.
+ * Its candidate when the foot lies inside it and the Gram form of the KKT
+ * test for w_k (<p, e_k> det = r_k det + l_i g_ik + l_j g_jk >= 0) passes.
+ * *taken is set when the face holds the answer but is too thin for the fast
+ * path. */
+static unsigned tetra_face(const agjk_vec3 *w, int i, int j, int k, double gii, double gjj,
+                           double gij, double gik, double gjk, double ri, double rj, double rk,
+                           int *taken, double lambda[4], agjk_vec3 *point) {
+    double det = gii * gjj - gij * gij;
+    double li = rj * gij - ri * gjj, lj = ri * gij - rj * gii;
+    double la = det - li - lj;
+    if (!(li > 0.0 && lj > 0.0 && la > 0.0)) return 0u;
+    if (!(rk * det + li * gik + lj * gjk >= 0.0)) return 0u;
+    *taken = 1;
+    if (!(det > WELL_CONDITIONED * gii * gjj)) return 0u;
+    return face_output(w, 4, i, j, det, li, lj, la, k, lambda, point);
+}
+
+/* The edge a-w_i of the tetrahedron: its candidate when the Gram form of the
+ * KKT test (<p, e_j> = r_j + t g_ij >= 0, t = -r_i / g_ii) passes for the two
+ * other vertices. */
+static unsigned tetra_edge(const agjk_vec3 *w, int i, int j, int k, double gii, double gij,
+                           double gik, double ri, double rj, double rk, double lambda[4],
+                           agjk_vec3 *point) {
+    double t = -ri / gii;
+    if (!(t > 0.0 && t < 1.0)) return 0u;
+    if (!(rj + t * gij >= 0.0 && rk + t * gik >= 0.0)) return 0u;
+    return edge_output(w, 4, i, ri, gii, j, k, lambda, point);
 }
 
 static unsigned gjk_tetrahedron(const agjk_vec3 *w, double lambda[4], agjk_vec3 *point) {
     agjk_vec3 a = w[3];
-    /* Face f through a is (a, w[f], w[g]), g = f + 1 mod 3, with edges e[f],
-     * e[g] and normal nrm[f] = e[f] x e[g]; vol = det(e0, e1, e2) is
-     * <e[h], nrm[f]> for the third index h. */
-    agjk_vec3 e[3] = {v3_sub(w[0], a), v3_sub(w[1], a), v3_sub(w[2], a)};
-    agjk_vec3 nrm[3] = {v3_cross(e[0], e[1]), v3_cross(e[1], e[2]), v3_cross(e[2], e[0])};
-    double ee0 = v3_norm2(e[0]), ee1 = v3_norm2(e[1]), ee2 = v3_norm2(e[2]);
-    double vol = v3_dot(e[0], nrm[1]);
-    if (!(vol * vol > DEGENERATE_RELATIVE * DEGENERATE_RELATIVE * ee0 * ee1 * ee2)) return 0u;
-    /* -a = sum mu_h e[h] gives mu_h vol = -<a, nrm[f]>: the origin is beyond
-     * face f (the face faces it) when s[f] = <a, nrm[f]> sign(vol) > 0. Its
-     * distance to the plane of f is then s[f] / |nrm[f]|; the face with the
-     * largest one is tried first, as it nearly always holds the projection.
-     * A non-degenerate tetrahedron has non-degenerate faces
-     * (|nrm[f]| >= |vol| / |e[h]|), so face_candidate may divide by |nrm|^2. */
-    double s[3] = {v3_dot(a, nrm[0]), v3_dot(a, nrm[1]), v3_dot(a, nrm[2])};
-    if (vol < 0.0) {
-        s[0] = -s[0];
-        s[1] = -s[1];
-        s[2] = -s[2];
+    agjk_vec3 e0 = v3_sub(w[0], a), e1 = v3_sub(w[1], a), e2 = v3_sub(w[2], a);
+    double r0 = v3_dot(a, e0), r1 = v3_dot(a, e1), r2 = v3_dot(a, e2);
+    if (r0 >= 0.0 && r1 >= 0.0 && r2 >= 0.0) return vertex_output(w, 4, lambda, point);
+    double g00 = v3_norm2(e0), g11 = v3_norm2(e1), g22 = v3_norm2(e2);
+    double g01 = v3_dot(e0, e1), g12 = v3_dot(e1, e2), g20 = v3_dot(e2, e0);
+    /* The faces through a, then its edges: the first that holds the answer;
+     * none (the origin inside, or beyond the previous face): exhaustive. The
+     * face tried first leaves out the vertex with the largest <a, e_k>, the
+     * one farthest back along a (right ~90% of the time in GJK runs). */
+    int back = r0 >= r1 ? (r0 >= r2 ? 0 : 2) : (r1 >= r2 ? 1 : 2);
+    int taken = 0;
+    unsigned mask = 0u;
+    for (int t = 0; t < 3 && !mask && !taken; ++t) {
+        switch (back + t < 3 ? back + t : back + t - 3) {
+        case 0:
+            mask = tetra_face(w, 1, 2, 0, g11, g22, g12, g01, g20, r1, r2, r0, &taken, lambda, point);
+            break;
+        case 1:
+            mask = tetra_face(w, 2, 0, 1, g22, g00, g20, g12, g01, r2, r0, r1, &taken, lambda, point);
+            break;
+        default:
+            mask = tetra_face(w, 0, 1, 2, g00, g11, g01, g20, g12, r0, r1, r2, &taken, lambda, point);
+            break;
+        }
     }
-    double nn[3] = {0.0, 0.0, 0.0};
-    int best = -1;
-    for (int f = 0; f < 3; ++f) {
-        if (!(s[f] > 0.0)) continue;
-        nn[f] = v3_norm2(nrm[f]);
-        if (best < 0 || s[f] * s[f] * nn[best] > s[best] * s[best] * nn[f]) best = f;
-    }
-    /* No face through a faces the origin: the origin is inside (or beyond the
-     * previous face), which the exhaustive projection settles. */
-    if (best < 0) return 0u;
-    const double uv2[3] = {ee0 * ee1, ee1 * ee2, ee2 * ee0};
-    for (int k = 0; k < 3; ++k) {
-        int f = best + k < 3 ? best + k : best + k - 3;
-        if (k > 0 && !(s[f] > 0.0)) continue;
-        unsigned mask = face_candidate(w, 4, f, f < 2 ? f + 1 : 0, e, &nrm[f], nn[f], uv2[f],
-                                       lambda, point);
-        if (mask) return mask;
-    }
-    return 0u;
-}
-
-static unsigned gjk_fast(const agjk_vec3 *w, int n, double lambda[4], agjk_vec3 *point) {
-    switch (n) {
-    case 1:
-        put(lambda, 0, 1.0, 0, 1.0, 0, 1.0);
-        *point = w[0];
-        return 1u;
-    case 2:
-        return gjk_segment(w, lambda, point);
-    case 3:
-        return gjk_triangle(w, lambda, point);
-    default:
-        return gjk_tetrahedron(w, lambda, point);
-    }
+    if (mask || taken) return mask;
+    mask = tetra_edge(w, 0, 1, 2, g00, g01, g20, r0, r1, r2, lambda, point);
+    if (!mask) mask = tetra_edge(w, 1, 2, 0, g11, g12, g01, r1, r2, r0, lambda, point);
+    if (!mask) mask = tetra_edge(w, 2, 0, 1, g22, g20, g12, r2, r0, r1, lambda, point);
+    return mask;
 }
 
 unsigned agjk__simplex_project_gjk_fast(const agjk_vec3 *w, int n, double lambda[4],
                                         agjk_vec3 *point) {
-    return gjk_fast(w, n, lambda, point);
+    switch (n) {
+    case 1: return vertex_output(w, 1, lambda, point);
+    case 2: return gjk_segment(w, lambda, point);
+    case 3: return gjk_triangle(w, lambda, point);
+    default: return gjk_tetrahedron(w, lambda, point);
+    }
 }
 
 unsigned agjk__simplex_project_gjk(const agjk_vec3 *w, int n, double lambda[4], agjk_vec3 *point) {
-    unsigned mask = gjk_fast(w, n, lambda, point);
+    unsigned mask;
+    switch (n) {
+    case 1: return vertex_output(w, 1, lambda, point);
+    case 2: mask = gjk_segment(w, lambda, point); break;
+    case 3: mask = gjk_triangle(w, lambda, point); break;
+    default: mask = gjk_tetrahedron(w, lambda, point); break;
+    }
     return mask ? mask : agjk__simplex_project(w, n, lambda, point);
 }
 
