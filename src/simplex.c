@@ -320,7 +320,7 @@ static unsigned edge_output(const agjk_vec3 *w, int n, int ib, double ra, double
  * u x v, u = w[ib] - a, v = w[ic] - a (accurate even when the foot is much
  * closer to the origin than a), if it passes the KKT test for w[o] (o < 0:
  * none). Returns the support mask, or 0. */
-static unsigned face_output(const agjk_vec3 *w, int n, int ib, int ic, double det, double lb,
+static inline unsigned face_output(const agjk_vec3 *w, int n, int ib, int ic, double det, double lb,
                             double lc, double la, int o, double lambda[4], agjk_vec3 *point) {
     int ia = n - 1;
     agjk_vec3 a = w[ia];
@@ -411,20 +411,17 @@ static unsigned gjk_tetrahedron(const agjk_vec3 *w, double lambda[4], agjk_vec3 
      * one farthest back along a (right ~90% of the time in GJK runs). */
     int back = r0 >= r1 ? (r0 >= r2 ? 0 : 2) : (r1 >= r2 ? 1 : 2);
     int taken = 0;
-    unsigned mask = 0u;
-    for (int t = 0; t < 3 && !mask && !taken; ++t) {
-        switch (back + t < 3 ? back + t : back + t - 3) {
-        case 0:
-            mask = tetra_face(w, 1, 2, 0, g11, g22, g12, g01, g20, r1, r2, r0, &taken, lambda, point);
-            break;
-        case 1:
-            mask = tetra_face(w, 2, 0, 1, g22, g00, g20, g12, g01, r2, r0, r1, &taken, lambda, point);
-            break;
-        default:
-            mask = tetra_face(w, 0, 1, 2, g00, g11, g01, g20, g12, r0, r1, r2, &taken, lambda, point);
-            break;
-        }
-    }
+    unsigned mask;
+#define FACE_WITHOUT_0 tetra_face(w, 1, 2, 0, g11, g22, g12, g01, g20, r1, r2, r0, &taken, lambda, point)
+#define FACE_WITHOUT_1 tetra_face(w, 2, 0, 1, g22, g00, g20, g12, g01, r2, r0, r1, &taken, lambda, point)
+#define FACE_WITHOUT_2 tetra_face(w, 0, 1, 2, g00, g11, g01, g20, g12, r0, r1, r2, &taken, lambda, point)
+    mask = back == 0 ? FACE_WITHOUT_0 : back == 1 ? FACE_WITHOUT_1 : FACE_WITHOUT_2;
+    if (!mask && !taken && back != 0) mask = FACE_WITHOUT_0;
+    if (!mask && !taken && back != 1) mask = FACE_WITHOUT_1;
+    if (!mask && !taken && back != 2) mask = FACE_WITHOUT_2;
+#undef FACE_WITHOUT_0
+#undef FACE_WITHOUT_1
+#undef FACE_WITHOUT_2
     if (mask || taken) return mask;
     mask = tetra_edge(w, 0, 1, 2, g00, g01, g20, r0, r1, r2, lambda, point);
     if (!mask) mask = tetra_edge(w, 1, 2, 0, g11, g12, g01, r1, r2, r0, lambda, point);
