@@ -335,18 +335,27 @@ static inline unsigned face_output(const agjk_vec3 *w, int n, int ib, int ic, do
     return (1u << ia) | (1u << ib) | (1u << ic);
 }
 
-static unsigned gjk_segment(const agjk_vec3 *w, double lambda[4], agjk_vec3 *point) {
+/* No fast answer: 0, or the exhaustive projection when asked for. */
+static unsigned decline(const agjk_vec3 *w, int n, int exhaustive, double lambda[4],
+                        agjk_vec3 *point) {
+    return exhaustive ? agjk__simplex_project(w, n, lambda, point) : 0u;
+}
+
+/* The fast path for n = 2, 3, 4 points; on failure, decline(). */
+static unsigned gjk_segment(const agjk_vec3 *w, int exhaustive, double lambda[4],
+                            agjk_vec3 *point) {
     agjk_vec3 a = w[1], b = w[0], u = v3_sub(b, a);
     double ra = v3_dot(a, u);
     if (ra >= 0.0) return vertex_output(w, 2, lambda, point); /* <a, b - a> >= 0 */
     double t = -ra / v3_norm2(u); /* as edge_output, with no vertex outside */
-    if (!(t > 0.0 && t < 1.0)) return 0u;
+    if (!(t > 0.0 && t < 1.0)) return decline(w, 2, exhaustive, lambda, point);
     put(lambda, 1, 1.0 - t, 0, t, 0, t);
     *point = v3_lerp2(a, 1.0 - t, b, t);
     return 3u;
 }
 
-static unsigned gjk_triangle(const agjk_vec3 *w, double lambda[4], agjk_vec3 *point) {
+static unsigned gjk_triangle(const agjk_vec3 *w, int exhaustive, double lambda[4],
+                             agjk_vec3 *point) {
     agjk_vec3 a = w[2], u = v3_sub(w[0], a), v = v3_sub(w[1], a);
     double ru = v3_dot(a, u), rv = v3_dot(a, v);
     if (ru >= 0.0 && rv >= 0.0) return vertex_output(w, 3, lambda, point);
@@ -354,8 +363,10 @@ static unsigned gjk_triangle(const agjk_vec3 *w, double lambda[4], agjk_vec3 *po
     double det = uu * vv - uv * uv;
     double lb = rv * uv - ru * vv, lc = ru * uv - rv * uu, la = det - lb - lc;
     if (lb > 0.0 && lc > 0.0 && la > 0.0) {
-        if (!(det > WELL_CONDITIONED * uu * vv)) return 0u;
-        return face_output(w, 3, 0, 1, det, lb, lc, la, -1, lambda, point);
+        unsigned mask = det > WELL_CONDITIONED * uu * vv
+                            ? face_output(w, 3, 0, 1, det, lb, lc, la, -1, lambda, point)
+                            : 0u;
+        return mask ? mask : decline(w, 3, exhaustive, lambda, point);
     }
     /* Outside the triangle: on its edges through a (the edge b-c belongs to
      * the previous simplex, which held the previous, farther iterate); first
@@ -364,7 +375,7 @@ static unsigned gjk_triangle(const agjk_vec3 *w, double lambda[4], agjk_vec3 *po
     if (lc <= 0.0) mask = edge_output(w, 3, 0, ru, uu, 1, -1, lambda, point);
     if (!mask) mask = edge_output(w, 3, 1, rv, vv, 0, -1, lambda, point);
     if (!mask && lc > 0.0) mask = edge_output(w, 3, 0, ru, uu, 1, -1, lambda, point);
-    return mask;
+    return mask ? mask : decline(w, 3, exhaustive, lambda, point);
 }
 
 /* In the tetrahedron (a = w[3], w0, w1, w2) with e_i = w_i - a, g_ij =
@@ -398,7 +409,8 @@ static unsigned tetra_edge(const agjk_vec3 *w, int i, int j, int k, double gii, 
     return edge_output(w, 4, i, ri, gii, j, k, lambda, point);
 }
 
-static unsigned gjk_tetrahedron(const agjk_vec3 *w, double lambda[4], agjk_vec3 *point) {
+static unsigned gjk_tetrahedron(const agjk_vec3 *w, int exhaustive, double lambda[4],
+                                agjk_vec3 *point) {
     agjk_vec3 a = w[3];
     agjk_vec3 e0 = v3_sub(w[0], a), e1 = v3_sub(w[1], a), e2 = v3_sub(w[2], a);
     double r0 = v3_dot(a, e0), r1 = v3_dot(a, e1), r2 = v3_dot(a, e2);
@@ -422,32 +434,31 @@ static unsigned gjk_tetrahedron(const agjk_vec3 *w, double lambda[4], agjk_vec3 
 #undef FACE_WITHOUT_0
 #undef FACE_WITHOUT_1
 #undef FACE_WITHOUT_2
-    if (mask || taken) return mask;
-    mask = tetra_edge(w, 0, 1, 2, g00, g01, g20, r0, r1, r2, lambda, point);
-    if (!mask) mask = tetra_edge(w, 1, 2, 0, g11, g12, g01, r1, r2, r0, lambda, point);
-    if (!mask) mask = tetra_edge(w, 2, 0, 1, g22, g20, g12, r2, r0, r1, lambda, point);
-    return mask;
+    if (!mask && !taken) {
+        mask = tetra_edge(w, 0, 1, 2, g00, g01, g20, r0, r1, r2, lambda, point);
+        if (!mask) mask = tetra_edge(w, 1, 2, 0, g11, g12, g01, r1, r2, r0, lambda, point);
+        if (!mask) mask = tetra_edge(w, 2, 0, 1, g22, g20, g12, r2, r0, r1, lambda, point);
+    }
+    return mask ? mask : decline(w, 4, exhaustive, lambda, point);
 }
 
 unsigned agjk__simplex_project_gjk_fast(const agjk_vec3 *w, int n, double lambda[4],
                                         agjk_vec3 *point) {
     switch (n) {
     case 1: return vertex_output(w, 1, lambda, point);
-    case 2: return gjk_segment(w, lambda, point);
-    case 3: return gjk_triangle(w, lambda, point);
-    default: return gjk_tetrahedron(w, lambda, point);
+    case 2: return gjk_segment(w, 0, lambda, point);
+    case 3: return gjk_triangle(w, 0, lambda, point);
+    default: return gjk_tetrahedron(w, 0, lambda, point);
     }
 }
 
 unsigned agjk__simplex_project_gjk(const agjk_vec3 *w, int n, double lambda[4], agjk_vec3 *point) {
-    unsigned mask;
     switch (n) {
     case 1: return vertex_output(w, 1, lambda, point);
-    case 2: mask = gjk_segment(w, lambda, point); break;
-    case 3: mask = gjk_triangle(w, lambda, point); break;
-    default: mask = gjk_tetrahedron(w, lambda, point); break;
+    case 2: return gjk_segment(w, 1, lambda, point);
+    case 3: return gjk_triangle(w, 1, lambda, point);
+    default: return gjk_tetrahedron(w, 1, lambda, point);
     }
-    return mask ? mask : agjk__simplex_project(w, n, lambda, point);
 }
 
 agjk_status agjk_simplex_project_origin(const agjk_vec3 *vertices, int count,
