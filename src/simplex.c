@@ -302,34 +302,66 @@ static unsigned vertex_output(const agjk_vec3 *w, int n, double lambda[4], agjk_
     return 1u << (n - 1);
 }
 
+/* The foot of the origin on the segment a-b, a = w[ia], b = w[ib], u = b - a,
+ * ra = <a, u>, uu = |u|^2, when it lies strictly inside: its weights on a
+ * and b and the point, measured from the endpoint nearer the origin
+ * (|b|^2 - |a|^2 = 2 ra + uu), as the exhaustive projection does: the error
+ * of the point is then a few ulps of that endpoint's norm, which matters
+ * when the foot is much nearer the origin than the other endpoint. Returns 0
+ * otherwise. */
+static inline int segment_foot(const agjk_vec3 *w, int ia, int ib, agjk_vec3 u, double ra,
+                               double uu, double *wa, double *wb, agjk_vec3 *p) {
+    /* The weight of the far endpoint is computed directly, the near one's
+     * as 1 minus it: a tiny weight keeps all its digits. */
+    double s; /* the weight of the far endpoint */
+    if (2.0 * ra + uu < 0.0) {
+        agjk_vec3 b = w[ib];
+        s = v3_dot(b, u) / uu; /* p = b + s (a - b) */
+        *p = v3_lerp2(b, 1.0 - s, w[ia], s);
+        *wa = s;
+        *wb = 1.0 - s;
+    } else {
+        agjk_vec3 a = w[ia];
+        s = -ra / uu; /* p = a + s (b - a) */
+        *p = v3_lerp2(a, 1.0 - s, w[ib], s);
+        *wa = 1.0 - s;
+        *wb = s;
+    }
+    return s > 0.0 && s < 1.0; /* also false for uu = 0 */
+}
+
 /* Candidate on the edge a-b, a = w[n-1], b = w[ib], with ra = <a, b - a> and
- * gbb = |b - a|^2: the foot a + t (b - a), t = -ra / gbb, when 0 < t < 1 and
- * it passes the KKT test for w[o1], w[o2] (indices < 0: none). Returns the
- * support mask, or 0. */
+ * gbb = |b - a|^2: the foot of the origin when it lies strictly inside the
+ * edge and passes the KKT test for w[o1], w[o2] (indices < 0: none). Returns
+ * the support mask, or 0. */
 static unsigned edge_output(const agjk_vec3 *w, int n, int ib, double ra, double gbb, int o1,
                             int o2, double lambda[4], agjk_vec3 *point) {
     int ia = n - 1;
-    double t = -ra / gbb;
-    if (!(t > 0.0 && t < 1.0)) return 0u; /* also rejects gbb = 0 */
-    agjk_vec3 p = v3_lerp2(w[ia], 1.0 - t, w[ib], t);
+    double wa, wb;
+    agjk_vec3 p;
+    if (!(-ra > 0.0 && -ra < gbb)) return 0u; /* the foot is outside the edge */
+    if (!segment_foot(w, ia, ib, v3_sub(w[ib], w[ia]), ra, gbb, &wa, &wb, &p)) return 0u;
     double pp = v3_norm2(p);
     if ((o1 >= 0 && !supports(p, pp, w[o1])) || (o2 >= 0 && !supports(p, pp, w[o2]))) return 0u;
-    put(lambda, ia, 1.0 - t, ib, t, ib, t);
+    put(lambda, ia, wa, ib, wb, ib, wb);
     *point = p;
     return (1u << ia) | (1u << ib);
 }
 
 /* Candidate in the face (a, w[ib], w[ic]), a = w[n-1], whose Gram weights
- * lb, lc, la (times det > 0) are positive: the foot from the normal
- * u x v, u = w[ib] - a, v = w[ic] - a (accurate even when the foot is much
- * closer to the origin than a), if it passes the KKT test for w[o] (o < 0:
- * none). Returns the support mask, or 0. */
-static inline unsigned face_output(const agjk_vec3 *w, int n, int ib, int ic, double det, double lb,
-                            double lc, double la, int o, double lambda[4], agjk_vec3 *point) {
+ * lb, lc, la (times det > 0) are positive: the foot n <n, q> / |n|^2 from
+ * the normal n = u x v, u = w[ib] - a, v = w[ic] - a, and the vertex
+ * q = w[iq] of the face nearest the origin (the error of <n, q> grows with
+ * |q|; accurate even when the foot is much nearer the origin than a), if it
+ * passes the KKT test for w[o] (o < 0: none). Returns the support mask, or
+ * 0. */
+static inline unsigned face_output(const agjk_vec3 *w, int n, int ib, int ic, int iq, double det,
+                                   double lb, double lc, double la, int o, double lambda[4],
+                                   agjk_vec3 *point) {
     int ia = n - 1;
     agjk_vec3 a = w[ia];
     agjk_vec3 nrm = v3_cross(v3_sub(w[ib], a), v3_sub(w[ic], a));
-    agjk_vec3 f = v3_scale(nrm, v3_dot(nrm, a) / v3_norm2(nrm));
+    agjk_vec3 f = v3_scale(nrm, v3_dot(nrm, w[iq]) / v3_norm2(nrm));
     double inv = 1.0 / det;
     double wa = la * inv, wb = lb * inv, wc = lc * inv;
     if (!(wa > 0.0 && wb > 0.0 && wc > 0.0)) return 0u;
@@ -348,13 +380,13 @@ static unsigned decline(const agjk_vec3 *w, int n, int exhaustive, double lambda
 /* The fast path for n = 2, 3, 4 points; on failure, decline(). */
 static unsigned gjk_segment(const agjk_vec3 *w, int exhaustive, double lambda[4],
                             agjk_vec3 *point) {
-    agjk_vec3 a = w[1], b = w[0], u = v3_sub(b, a);
+    agjk_vec3 a = w[1], u = v3_sub(w[0], a);
     double ra = v3_dot(a, u);
     if (ra >= 0.0) return vertex_output(w, 2, lambda, point); /* <a, b - a> >= 0 */
-    double t = -ra / v3_norm2(u); /* as edge_output, with no vertex outside */
-    if (!(t > 0.0 && t < 1.0)) return decline(w, 2, exhaustive, lambda, point);
-    put(lambda, 1, 1.0 - t, 0, t, 0, t);
-    *point = v3_lerp2(a, 1.0 - t, b, t);
+    double wa, wb; /* as edge_output, with no vertex outside */
+    if (!segment_foot(w, 1, 0, u, ra, v3_norm2(u), &wa, &wb, point))
+        return decline(w, 2, exhaustive, lambda, point);
+    put(lambda, 1, wa, 0, wb, 0, wb);
     return 3u;
 }
 
@@ -367,8 +399,11 @@ static unsigned gjk_triangle(const agjk_vec3 *w, int exhaustive, double lambda[4
     double det = uu * vv - uv * uv;
     double lb = rv * uv - ru * vv, lc = ru * uv - rv * uu, la = det - lb - lc;
     if (lb > 0.0 && lc > 0.0 && la > 0.0) {
+        /* |w_i|^2 - |a|^2 = 2 r_i + g_ii: the vertex nearest the origin */
+        double db = 2.0 * ru + uu, dc = 2.0 * rv + vv;
+        int iq = db < dc ? (db < 0.0 ? 0 : 2) : (dc < 0.0 ? 1 : 2);
         unsigned mask = det > WELL_CONDITIONED * uu * vv
-                            ? face_output(w, 3, 0, 1, det, lb, lc, la, -1, lambda, point)
+                            ? face_output(w, 3, 0, 1, iq, det, lb, lc, la, -1, lambda, point)
                             : 0u;
         return mask ? mask : decline(w, 3, exhaustive, lambda, point);
     }
@@ -398,7 +433,10 @@ static unsigned tetra_face(const agjk_vec3 *w, int i, int j, int k, double gii, 
     if (!(rk * det + li * gik + lj * gjk >= 0.0)) return 0u;
     *taken = 1;
     if (!(det > WELL_CONDITIONED * gii * gjj)) return 0u;
-    return face_output(w, 4, i, j, det, li, lj, la, k, lambda, point);
+    /* |w_i|^2 - |a|^2 = 2 r_i + g_ii: the vertex nearest the origin */
+    double di = 2.0 * ri + gii, dj = 2.0 * rj + gjj;
+    int iq = di < dj ? (di < 0.0 ? i : 3) : (dj < 0.0 ? j : 3);
+    return face_output(w, 4, i, j, iq, det, li, lj, la, k, lambda, point);
 }
 
 /* The edge a-w_i of the tetrahedron: its candidate when the Gram form of the
