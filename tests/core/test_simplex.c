@@ -11,6 +11,7 @@
  * clouds), and on adversarial ones where the newest vertex is not in the
  * optimal face; its fast path alone (agjk__simplex_project_gjk_fast) must be
  * right whenever it answers. */
+#include <float.h>
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
@@ -651,6 +652,71 @@ START_TEST(gjk_far_small) {
 }
 END_TEST
 
+START_TEST(gjk_near_contact) {
+    /* Near contact the projection is tiny next to the vertices, and its
+     * error relative to it is what the solver's gap test and stall test see:
+     * the GJK entry point must be as accurate as the exhaustive projection.
+     * GJK-ordered simplices: a previous face F, nearly in a plane at a tiny
+     * distance dist from the origin, its vertices at mixed distances from the
+     * foot, and a new point a that improves on F's projection. Checked: the
+     * error of the point against the reference at most twice the exhaustive
+     * projection's, plus 32 ulps of the smallest norm of a vertex of the face
+     * holding the projection (the error of any formula for the foot). */
+    tu_rng rng;
+    tu_rng_seed(&rng, 18);
+    gjk_counts counts = {{0}, {0}};
+    double worst = 0.0;
+    for (int i = 0; i < 20000; i++) {
+        double size = tu_log_uniform(&rng, -2, 2);
+        double dist = size * tu_log_uniform(&rng, -12, -3);
+        agjk_vec3 nrm = tu_unit_vector(&rng);
+        agjk_vec3 t1 = tu_unit_vector(&rng);
+        t1 = tu_scale(tu_sub(t1, tu_scale(nrm, tu_dot(t1, nrm))), 1.0);
+        t1 = tu_scale(t1, 1.0 / tu_norm(t1));
+        agjk_vec3 t2 = tu_cross(nrm, t1);
+        int m = 1 + (int)tu_uniform_int(&rng, 3);
+        agjk_vec3 f[4];
+        for (int k = 0; k < m; k++) {
+            double r = size * tu_log_uniform(&rng, -8, 0), th = tu_uniform_range(&rng, 0, 6.283185307179586);
+            f[k] = tu_add(tu_scale(nrm, dist * (1.0 + 1e-3 * tu_uniform_range(&rng, -1, 1))),
+                          tu_add(tu_scale(t1, r * cos(th)), tu_scale(t2, r * sin(th))));
+        }
+        double l[4];
+        agjk_vec3 x;
+        unsigned fm = agjk__simplex_project(f, m, l, &x);
+        agjk_vec3 w[4];
+        int n = 0;
+        for (int k = 0; k < m; k++)
+            if (fm & (1u << k)) w[n++] = f[k];
+        /* the new point: in the plane or slightly towards the origin, far or near */
+        double r = size * tu_log_uniform(&rng, -6, 0), th = tu_uniform_range(&rng, 0, 6.283185307179586);
+        agjk_vec3 a = tu_add(tu_scale(nrm, dist * tu_uniform_range(&rng, 0.5, 1.0)),
+                             tu_add(tu_scale(t1, r * cos(th)), tu_scale(t2, r * sin(th))));
+        if (!(tu_dot(x, a) < tu_dot(x, x))) continue; /* not a GJK step */
+        w[n++] = a;
+        agjk_vec3 p;
+        check_gjk(w, n, "gjk near contact", i, &counts, l, &p);
+        ref_projection ref;
+        ref_project_origin(w, n, &ref);
+        double lo[4];
+        agjk_vec3 po;
+        agjk__simplex_project(w, n, lo, &po);
+        double vmin = INFINITY; /* over the face holding the projection */
+        for (int k = 0; k < n; k++)
+            if (ref.mask & (1u << k)) vmin = fmin(vmin, tu_norm(w[k]));
+        agjk_vec3 rp = tu_vec((double)ref.point[0], (double)ref.point[1], (double)ref.point[2]);
+        double err = tu_norm(tu_sub(p, rp)), err_old = tu_norm(tu_sub(po, rp));
+        double allowed = 2.0 * err_old + 32.0 * DBL_EPSILON * vmin;
+        if (tu_norm(rp) > 0 && err / tu_norm(rp) > worst) worst = err / tu_norm(rp);
+        TU_ENSURE(err <= allowed, "gjk near contact %d (n=%d): error %g, exhaustive %g, |p| %g, "
+                  "smallest vertex %g", i, n, err, err_old, tu_norm(rp), vmin);
+    }
+    print_counts("gjk_near_contact", &counts);
+    printf("gjk_near_contact: worst error %.3g x |p|\n", worst);
+    TU_CHECK(counts.calls[2] + counts.calls[3] + counts.calls[4] > 10000);
+}
+END_TEST
+
 int main(void) {
     Suite *s = suite_create("simplex");
     TU_ADD(s, random_simplices);
@@ -664,5 +730,6 @@ int main(void) {
     TU_ADD(s, gjk_like_runs);
     TU_ADD(s, gjk_adversarial);
     TU_ADD(s, gjk_far_small);
+    TU_ADD(s, gjk_near_contact);
     return tu_run_suite(s);
 }
