@@ -302,31 +302,19 @@ static unsigned vertex_output(const agjk_vec3 *w, int n, double lambda[4], agjk_
     return 1u << (n - 1);
 }
 
-/* The foot of the origin on the segment a-b, a = w[ia], b = w[ib], u = b - a,
- * ra = <a, u>, uu = |u|^2, when it lies strictly inside: its weights on a
- * and b and the point, measured from the endpoint nearer the origin
- * (|b|^2 - |a|^2 = 2 ra + uu), as the exhaustive projection does: the error
- * of the point is then a few ulps of that endpoint's norm, which matters
- * when the foot is much nearer the origin than the other endpoint. Returns 0
- * otherwise. */
-static inline int segment_foot(const agjk_vec3 *w, int ia, int ib, agjk_vec3 u, double ra,
-                               double uu, double *wa, double *wb, agjk_vec3 *p) {
-    /* The weight of the far endpoint is computed directly, the near one's
-     * as 1 minus it: a tiny weight keeps all its digits. */
-    double s; /* the weight of the far endpoint */
-    if (2.0 * ra + uu < 0.0) {
-        agjk_vec3 b = w[ib];
-        s = v3_dot(b, u) / uu; /* p = b + s (a - b) */
-        *p = v3_lerp2(b, 1.0 - s, w[ia], s);
-        *wa = s;
-        *wb = 1.0 - s;
-    } else {
-        agjk_vec3 a = w[ia];
-        s = -ra / uu; /* p = a + s (b - a) */
-        *p = v3_lerp2(a, 1.0 - s, w[ib], s);
-        *wa = 1.0 - s;
-        *wb = s;
-    }
+/* The foot of the origin on the segment a-b, a = w[ia] the newest point,
+ * b = w[ib] an older one, u = b - a, uu = |u|^2, when it lies strictly
+ * inside: its weights on a and b and the point. Measured from b with the
+ * weight of a computed directly, exactly as the exhaustive projection does
+ * (bit for bit: the solver's path does not depend on which one projects);
+ * the error of the point is a few ulps of |b|. Returns 0 otherwise. */
+static inline int segment_foot(const agjk_vec3 *w, int ia, int ib, agjk_vec3 u, double uu,
+                               double *wa, double *wb, agjk_vec3 *p) {
+    agjk_vec3 b = w[ib];
+    double s = v3_dot(b, u) / uu; /* p = b + s (a - b) */
+    *p = v3_lerp2(b, 1.0 - s, w[ia], s);
+    *wa = s;
+    *wb = 1.0 - s;
     return s > 0.0 && s < 1.0; /* also false for uu = 0 */
 }
 
@@ -340,7 +328,7 @@ static unsigned edge_output(const agjk_vec3 *w, int n, int ib, double ra, double
     double wa, wb;
     agjk_vec3 p;
     if (!(-ra > 0.0 && -ra < gbb)) return 0u; /* the foot is outside the edge */
-    if (!segment_foot(w, ia, ib, v3_sub(w[ib], w[ia]), ra, gbb, &wa, &wb, &p)) return 0u;
+    if (!segment_foot(w, ia, ib, v3_sub(w[ib], w[ia]), gbb, &wa, &wb, &p)) return 0u;
     double pp = v3_norm2(p);
     if ((o1 >= 0 && !supports(p, pp, w[o1])) || (o2 >= 0 && !supports(p, pp, w[o2]))) return 0u;
     put(lambda, ia, wa, ib, wb, ib, wb);
@@ -384,7 +372,7 @@ static unsigned gjk_segment(const agjk_vec3 *w, int exhaustive, double lambda[4]
     double ra = v3_dot(a, u);
     if (ra >= 0.0) return vertex_output(w, 2, lambda, point); /* <a, b - a> >= 0 */
     double wa, wb; /* as edge_output, with no vertex outside */
-    if (!segment_foot(w, 1, 0, u, ra, v3_norm2(u), &wa, &wb, point))
+    if (!segment_foot(w, 1, 0, u, v3_norm2(u), &wa, &wb, point))
         return decline(w, 2, exhaustive, lambda, point);
     put(lambda, 1, wa, 0, wb, 0, wb);
     return 3u;
