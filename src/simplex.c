@@ -255,10 +255,12 @@ unsigned agjk__simplex_project(const agjk_vec3 *p, int n, double lambda[4], agjk
  * barycentric weights is accepted only when <p, q> >= |p|^2 (up to rounding)
  * for every vertex q outside S, the optimality (KKT) condition of the
  * projection onto the whole hull: the plane through p normal to p then
- * supports the hull. No volume is ever divided by, so a flat tetrahedron
- * needs no special case; a face is used only when its angle at a is well
- * away from 0 or pi. When no candidate passes, when the only candidate is an
- * ill-conditioned face, or when the origin may be inside the tetrahedron,
+ * supports the hull. The face and edge paths divide by no volume, so a flat
+ * tetrahedron needs no special case there; a face is used only when its
+ * angle at a is well away from 0 or pi, and an enclosed origin is declared
+ * only when the tetrahedron is well shaped and the origin clearly inside.
+ * Otherwise (no candidate passes, the only candidate is an ill-conditioned
+ * face, the origin is inside but not clearly, or the simplex is degenerate)
  * the exhaustive projection above decides. So the answer never rests on the
  * GJK assumption (which momentum directions or rounding can break), only the
  * speed does. */
@@ -490,9 +492,9 @@ static unsigned gjk_tetrahedron(const agjk_vec3 *w, int exhaustive, double lambd
     double g01 = v3_dot(e0, e1), g12 = v3_dot(e1, e2), g20 = v3_dot(e2, e0);
     /* The faces through a, then its edges: the first that holds the answer;
      * then the inside; else (beyond the previous face, borderline cases):
-     * the exhaustive projection. The
-     * face tried first leaves out the vertex with the largest <a, e_k>, the
-     * one farthest back along a (right ~90% of the time in GJK runs). */
+     * the exhaustive projection. The face tried first leaves out the vertex
+     * with the largest <a, e_k>, the one farthest back along a (right ~90%
+     * of the time in GJK runs on ellipsoids and boxes). */
     int back = r0 >= r1 ? (r0 >= r2 ? 0 : 2) : (r1 >= r2 ? 1 : 2);
     int taken = 0;
     unsigned mask;
