@@ -417,8 +417,8 @@ static unsigned gjk_triangle(const agjk_vec3 *w, int exhaustive, double lambda[4
  * <e_i, e_j> and r_i = <a, e_i>: the face (a, w_i, w_j), k the third index.
  * Its candidate when the foot lies inside it and the Gram form of the KKT
  * test for w_k (<p, e_k> det = r_k det + l_i g_ik + l_j g_jk >= 0) passes.
- * *taken is set when the face holds the answer but is too thin for the fast
- * path. */
+ * *taken is set to 1 + k when the face holds the answer but is too thin for
+ * the Gram form. */
 static unsigned tetra_face(const agjk_vec3 *w, int i, int j, int k, double gii, double gjj,
                            double gij, double gik, double gjk, double ri, double rj, double rk,
                            int *taken, double lambda[4], agjk_vec3 *point) {
@@ -427,7 +427,7 @@ static unsigned tetra_face(const agjk_vec3 *w, int i, int j, int k, double gii, 
     double la = det - li - lj;
     if (!(li > 0.0 && lj > 0.0 && la > 0.0)) return 0u;
     if (!(rk * det + li * gik + lj * gjk >= 0.0)) return 0u;
-    *taken = 1;
+    *taken = 1 + k;
     if (!(det > WELL_CONDITIONED * gii * gjj)) return 0u;
     /* |w_i|^2 - |a|^2 = 2 r_i + g_ii: the vertex nearest the origin */
     double di = 2.0 * ri + gii, dj = 2.0 * rj + gjj;
@@ -482,6 +482,21 @@ static unsigned tetra_inside(const agjk_vec3 *w, double lambda[4], agjk_vec3 *po
     return 0xFu;
 }
 
+/* The thin face of the tetrahedron leaving out w_k (taken = 1 + k), which
+ * holds the answer by the Gram tests: its projection by the exhaustive
+ * triangle routine (the face's own degeneracy-proof case analysis, vertices
+ * in index order as the exhaustive projection takes them), accepted when it
+ * passes the KKT test for every vertex outside its support set. Cheaper than
+ * the whole exhaustive projection, which would examine every visible face. */
+static unsigned thin_face(const agjk_vec3 *w, int taken, double lambda[4], agjk_vec3 *point) {
+    int k = taken - 1, i = k == 0 ? 1 : 0, j = k == 2 ? 1 : 2;
+    unsigned mask = tighten(project_triangle(w, 4, i, j, 3, lambda, point), lambda, 4);
+    double pp = v3_norm2(*point);
+    for (int q = 0; q < 4; ++q)
+        if (!(mask & (1u << q)) && !supports(*point, pp, w[q])) return 0u;
+    return mask;
+}
+
 static unsigned gjk_tetrahedron(const agjk_vec3 *w, int exhaustive, double lambda[4],
                                 agjk_vec3 *point) {
     agjk_vec3 a = w[3];
@@ -515,6 +530,7 @@ static unsigned gjk_tetrahedron(const agjk_vec3 *w, int exhaustive, double lambd
         /* GJK's last step on overlapping shapes: the origin enclosed. */
         if (!mask) mask = tetra_inside(w, lambda, point);
     }
+    if (!mask && taken) mask = thin_face(w, taken, lambda, point);
     return mask ? mask : decline(w, 4, exhaustive, lambda, point);
 }
 
