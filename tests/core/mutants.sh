@@ -35,7 +35,7 @@ gjk-projection-inside-unchecked|src/simplex.c|s/na > DEGENERATE_RELATIVE \* (vol
 gjk-projection-vertex-early|src/simplex.c|s/if (r0 >= 0.0 \&\& r1 >= 0.0 \&\& r2 >= 0.0) return vertex_output/if (r0 >= 0.0 \&\& r1 >= 0.0) return vertex_output/
 gjk-projection-thin-face|src/simplex.c|s/#define WELL_CONDITIONED 1e-2/#define WELL_CONDITIONED 0.0/
 gjk-projection-foot-from-newest|src/simplex.c|s/v3_dot(nrm, w\[iq\])/v3_dot(nrm, a)/
-gjk-projection-edge-from-newest|src/simplex.c|s/if (2.0 \* ra + uu < 0.0) {/if (0) {/
+gjk-projection-edge-weight-by-difference|src/simplex.c|s/double s = v3_dot(b, u) \/ uu;/double s = 1.0 - (1.0 - v3_dot(b, u) \/ uu);/
 '
 TESTS="simplex shapes api analytic methods properties collide"
 escaped=0
