@@ -238,6 +238,321 @@ unsigned agjk__simplex_project(const agjk_vec3 *p, int n, double lambda[4], agjk
     return tighten(mask, lambda, n);
 }
 
+/* ---- The projection specialised for GJK ---------------------------------
+ *
+ * In GJK the simplex w[0..n-2] is the smallest face holding the previous
+ * iterate x, and the new support point a = w[n-1] satisfies <x, a> < |x|^2.
+ * The projection onto the enlarged hull is then strictly closer than x, so it
+ * lies on a face containing a: the faces opposite a never need testing
+ * (Gilbert, Johnson and Keerthi 1988; the Voronoi-region form of Ericson,
+ * "Real-Time Collision Detection", 2005, Sec. 5.1.5-5.1.6). The fast path
+ * below looks only at the faces through a, with the dot products of the
+ * edges e_i = w_i - a and of a with them (Johnson's sub-algorithm in Gram
+ * form): on a face (a, w_i, w_j) the origin's foot is
+ * a + (l_i e_i + l_j e_j) / det with det = |e_i|^2 |e_j|^2 - <e_i, e_j>^2.
+ *
+ * It trusts no region test, though: a candidate p on a face S with positive
+ * barycentric weights is accepted only when <p, q> >= |p|^2 (up to rounding)
+ * for every vertex q outside S, the optimality (KKT) condition of the
+ * projection onto the whole hull: the plane through p normal to p then
+ * supports the hull. The face and edge paths divide by no volume, so a flat
+ * tetrahedron needs no special case there; a face is used only when its
+ * angle at a is well away from 0 or pi, and an enclosed origin is declared
+ * only when the tetrahedron is well shaped and the origin clearly inside.
+ * Otherwise (no candidate passes, the only candidate is an ill-conditioned
+ * face, the origin is inside but not clearly, or the simplex is degenerate)
+ * the exhaustive projection above decides. So the answer never rests on the
+ * GJK assumption (which momentum directions or rounding can break), only the
+ * speed does. */
+
+/* Rounding allowance of the optimality test, relative to |p| |q|. Erring
+ * on the strict side is safe: a wrongly rejected candidate only costs the
+ * exhaustive projection. A candidate accepted within the allowance has
+ * <p, q - p> >= -2 eps |p| |q| for every dropped vertex q: what it leaves
+ * unexploited adds at most 4 eps |p| |q| to the solver's next gap
+ * 2 <p, p - s>, below the floor the solver already attributes to rounding
+ * (2 |x| times 4 eps times the magnitude of the support points); and p is
+ * still a point of the hull, so the gap certificate holds. On simplices
+ * recorded from GJK runs the fallback rate is the same for any allowance
+ * from 0 to 8 ulps (measured). */
+#define OPTIMALITY_RELATIVE (2.0 * DBL_EPSILON)
+
+/* Smallest sin^2 of the angle at a of a face whose interior the fast path
+ * computes: the Gram-form weights lose about eps / sin^2 (relative), so at
+ * most ~100 ulps here; thinner faces go to the exhaustive projection, which
+ * measures from the shortest edges. */
+#define WELL_CONDITIONED 1e-2
+
+/* Smallest (vol / (|e0| |e1| |e2|))^2 of a tetrahedron whose inside the fast
+ * path decides (see tetra_inside). */
+#define WELL_SHAPED 1e-4
+
+/* The KKT test for one vertex q outside the candidate's face (pp = |p|^2):
+ * <p, q> - |p|^2 >= -OPTIMALITY_RELATIVE |p| |q|. */
+static int supports(agjk_vec3 p, double pp, agjk_vec3 q) {
+    double m = v3_dot(p, q) - pp;
+    return m >= 0.0 || m * m <= OPTIMALITY_RELATIVE * OPTIMALITY_RELATIVE * pp * v3_norm2(q);
+}
+
+/* Writes weights for a support set of up to three vertices (j, k may repeat
+ * i with the same weight when unused). lambda always has four entries. */
+static void put(double lambda[4], int i, double wi, int j, double wj, int k, double wk) {
+    lambda[0] = lambda[1] = lambda[2] = lambda[3] = 0.0;
+    lambda[k] = wk;
+    lambda[j] = wj;
+    lambda[i] = wi;
+}
+
+/* The vertex a = w[n-1] alone, once its KKT test (<a, e_i> >= 0) passed. */
+static unsigned vertex_output(const agjk_vec3 *w, int n, double lambda[4], agjk_vec3 *point) {
+    put(lambda, n - 1, 1.0, n - 1, 1.0, n - 1, 1.0);
+    *point = w[n - 1];
+    return 1u << (n - 1);
+}
+
+/* The foot of the origin on the segment a-b, a = w[ia] the newest point,
+ * b = w[ib] an older one, u = b - a, uu = |u|^2, when it lies strictly
+ * inside: its weights on a and b and the point. Measured from b with the
+ * weight of a computed directly, exactly as the exhaustive projection does
+ * (bit for bit: the solver's path does not depend on which one projects);
+ * the error of the point is a few ulps of |b|. Returns 0 otherwise. */
+static inline int segment_foot(const agjk_vec3 *w, int ia, int ib, agjk_vec3 u, double uu,
+                               double *wa, double *wb, agjk_vec3 *p) {
+    agjk_vec3 b = w[ib];
+    double s = v3_dot(b, u) / uu; /* p = b + s (a - b) */
+    *p = v3_lerp2(b, 1.0 - s, w[ia], s);
+    *wa = s;
+    *wb = 1.0 - s;
+    return s > 0.0 && s < 1.0; /* also false for uu = 0 */
+}
+
+/* Candidate on the edge a-b, a = w[n-1], b = w[ib], with ra = <a, b - a> and
+ * gbb = |b - a|^2: the foot of the origin when it lies strictly inside the
+ * edge and passes the KKT test for w[o1], w[o2] (indices < 0: none). Returns
+ * the support mask, or 0. */
+static unsigned edge_output(const agjk_vec3 *w, int n, int ib, double ra, double gbb, int o1,
+                            int o2, double lambda[4], agjk_vec3 *point) {
+    int ia = n - 1;
+    double wa, wb;
+    agjk_vec3 p;
+    if (!(-ra > 0.0 && -ra < gbb)) return 0u; /* the foot is outside the edge */
+    if (!segment_foot(w, ia, ib, v3_sub(w[ib], w[ia]), gbb, &wa, &wb, &p)) return 0u;
+    double pp = v3_norm2(p);
+    if ((o1 >= 0 && !supports(p, pp, w[o1])) || (o2 >= 0 && !supports(p, pp, w[o2]))) return 0u;
+    put(lambda, ia, wa, ib, wb, ib, wb);
+    *point = p;
+    return (1u << ia) | (1u << ib);
+}
+
+/* Candidate in the face (a, w[ib], w[ic]), a = w[n-1], whose Gram weights
+ * lb, lc, la (times det > 0) are positive: the foot n <n, q> / |n|^2 from
+ * the normal n = u x v, u = w[ib] - a, v = w[ic] - a, and the vertex
+ * q = w[iq] of the face nearest the origin (the error of <n, q> grows with
+ * |q|; accurate even when the foot is much nearer the origin than a), if it
+ * passes the KKT test for w[o] (o < 0: none). Returns the support mask, or
+ * 0. */
+static inline unsigned face_output(const agjk_vec3 *w, int n, int ib, int ic, int iq, double det,
+                                   double lb, double lc, double la, int o, double lambda[4],
+                                   agjk_vec3 *point) {
+    int ia = n - 1;
+    agjk_vec3 a = w[ia];
+    agjk_vec3 nrm = v3_cross(v3_sub(w[ib], a), v3_sub(w[ic], a));
+    agjk_vec3 f = v3_scale(nrm, v3_dot(nrm, w[iq]) / v3_norm2(nrm));
+    double inv = 1.0 / det;
+    double wa = la * inv, wb = lb * inv, wc = lc * inv;
+    if (!(wa > 0.0 && wb > 0.0 && wc > 0.0)) return 0u;
+    if (o >= 0 && !supports(f, v3_norm2(f), w[o])) return 0u;
+    put(lambda, ia, wa, ib, wb, ic, wc);
+    *point = f;
+    return (1u << ia) | (1u << ib) | (1u << ic);
+}
+
+/* No fast answer: 0, or the exhaustive projection when asked for. */
+static unsigned decline(const agjk_vec3 *w, int n, int exhaustive, double lambda[4],
+                        agjk_vec3 *point) {
+    return exhaustive ? agjk__simplex_project(w, n, lambda, point) : 0u;
+}
+
+/* The fast path for n = 2, 3, 4 points; on failure, decline(). */
+static unsigned gjk_segment(const agjk_vec3 *w, int exhaustive, double lambda[4],
+                            agjk_vec3 *point) {
+    agjk_vec3 a = w[1], u = v3_sub(w[0], a);
+    double ra = v3_dot(a, u);
+    if (ra >= 0.0) return vertex_output(w, 2, lambda, point); /* <a, b - a> >= 0 */
+    double wa, wb; /* as edge_output, with no vertex outside */
+    if (!segment_foot(w, 1, 0, u, v3_norm2(u), &wa, &wb, point))
+        return decline(w, 2, exhaustive, lambda, point);
+    put(lambda, 1, wa, 0, wb, 0, wb);
+    return 3u;
+}
+
+static unsigned gjk_triangle(const agjk_vec3 *w, int exhaustive, double lambda[4],
+                             agjk_vec3 *point) {
+    agjk_vec3 a = w[2], u = v3_sub(w[0], a), v = v3_sub(w[1], a);
+    double ru = v3_dot(a, u), rv = v3_dot(a, v);
+    if (ru >= 0.0 && rv >= 0.0) return vertex_output(w, 3, lambda, point);
+    double uu = v3_norm2(u), vv = v3_norm2(v), uv = v3_dot(u, v);
+    double det = uu * vv - uv * uv;
+    double lb = rv * uv - ru * vv, lc = ru * uv - rv * uu, la = det - lb - lc;
+    if (lb > 0.0 && lc > 0.0 && la > 0.0) {
+        /* |w_i|^2 - |a|^2 = 2 r_i + g_ii: the vertex nearest the origin */
+        double db = 2.0 * ru + uu, dc = 2.0 * rv + vv;
+        int iq = db < dc ? (db < 0.0 ? 0 : 2) : (dc < 0.0 ? 1 : 2);
+        unsigned mask = det > WELL_CONDITIONED * uu * vv
+                            ? face_output(w, 3, 0, 1, iq, det, lb, lc, la, -1, lambda, point)
+                            : 0u;
+        return mask ? mask : decline(w, 3, exhaustive, lambda, point);
+    }
+    /* Outside the triangle: on its edges through a (the edge b-c belongs to
+     * the previous simplex, which held the previous, farther iterate); first
+     * the one beyond whose line the foot lies. */
+    unsigned mask = 0u;
+    if (lc <= 0.0) mask = edge_output(w, 3, 0, ru, uu, 1, -1, lambda, point);
+    if (!mask) mask = edge_output(w, 3, 1, rv, vv, 0, -1, lambda, point);
+    if (!mask && lc > 0.0) mask = edge_output(w, 3, 0, ru, uu, 1, -1, lambda, point);
+    return mask ? mask : decline(w, 3, exhaustive, lambda, point);
+}
+
+/* In the tetrahedron (a = w[3], w0, w1, w2) with e_i = w_i - a, g_ij =
+ * <e_i, e_j> and r_i = <a, e_i>: the face (a, w_i, w_j), k the third index.
+ * Its candidate when the foot lies inside it and the Gram form of the KKT
+ * test for w_k (<p, e_k> det = r_k det + l_i g_ik + l_j g_jk >= 0) passes.
+ * *taken is set to 1 + k when the face holds the answer but is too thin for
+ * the Gram form. */
+static unsigned tetra_face(const agjk_vec3 *w, int i, int j, int k, double gii, double gjj,
+                           double gij, double gik, double gjk, double ri, double rj, double rk,
+                           int *taken, double lambda[4], agjk_vec3 *point) {
+    double det = gii * gjj - gij * gij;
+    double li = rj * gij - ri * gjj, lj = ri * gij - rj * gii;
+    double la = det - li - lj;
+    if (!(li > 0.0 && lj > 0.0 && la > 0.0)) return 0u;
+    if (!(rk * det + li * gik + lj * gjk >= 0.0)) return 0u;
+    *taken = 1 + k;
+    if (!(det > WELL_CONDITIONED * gii * gjj)) return 0u;
+    /* |w_i|^2 - |a|^2 = 2 r_i + g_ii: the vertex nearest the origin */
+    double di = 2.0 * ri + gii, dj = 2.0 * rj + gjj;
+    int iq = di < dj ? (di < 0.0 ? i : 3) : (dj < 0.0 ? j : 3);
+    return face_output(w, 4, i, j, iq, det, li, lj, la, k, lambda, point);
+}
+
+/* The edge a-w_i of the tetrahedron: its candidate when the Gram form of the
+ * KKT test (<p, e_j> = r_j + t g_ij >= 0, t = -r_i / g_ii) passes for the two
+ * other vertices. */
+static unsigned tetra_edge(const agjk_vec3 *w, int i, int j, int k, double gii, double gij,
+                           double gik, double ri, double rj, double rk, double lambda[4],
+                           agjk_vec3 *point) {
+    double t = -ri / gii;
+    if (!(t > 0.0 && t < 1.0)) return 0u;
+    if (!(rj + t * gij >= 0.0 && rk + t * gik >= 0.0)) return 0u;
+    return edge_output(w, 4, i, ri, gii, j, k, lambda, point);
+}
+
+/* The origin strictly inside the tetrahedron, decided from a: -a = sum mu_i
+ * e_i with mu_i vol = <-a, e_j x e_k> (Cramer's rule), accepted only when
+ * every signed volume clears its own rounding error (a few ulps of the
+ * products of the lengths involved) by a wide margin, and when the
+ * tetrahedron is well shaped at a (vol^2 > WELL_SHAPED |e0|^2 |e1|^2
+ * |e2|^2: the weights then reproduce the origin to ~300 ulps of |a|);
+ * other cases are left to the exhaustive projection. */
+static unsigned tetra_inside(const agjk_vec3 *w, double lambda[4], agjk_vec3 *point) {
+    agjk_vec3 a = w[3];
+    agjk_vec3 e0 = v3_sub(w[0], a), e1 = v3_sub(w[1], a), e2 = v3_sub(w[2], a);
+    double g00 = v3_norm2(e0), g11 = v3_norm2(e1), g22 = v3_norm2(e2);
+    agjk_vec3 c12 = v3_cross(e1, e2), c20 = v3_cross(e2, e0), c01 = v3_cross(e0, e1);
+    double vol = v3_dot(e0, c12);
+    double n0 = -v3_dot(a, c12), n1 = -v3_dot(a, c20), n2 = -v3_dot(a, c01);
+    if (vol < 0.0) {
+        vol = -vol;
+        n0 = -n0;
+        n1 = -n1;
+        n2 = -n2;
+    }
+    double na = vol - n0 - n1 - n2, aa = v3_norm2(a);
+    const double m2 = DEGENERATE_RELATIVE * DEGENERATE_RELATIVE;
+    if (!(vol * vol > WELL_SHAPED * g00 * g11 * g22 && n0 > 0.0 && n0 * n0 > m2 * aa * g11 * g22 &&
+          n1 > 0.0 && n1 * n1 > m2 * aa * g22 * g00 && n2 > 0.0 && n2 * n2 > m2 * aa * g00 * g11 &&
+          na > DEGENERATE_RELATIVE * (vol + n0 + n1 + n2)))
+        return 0u;
+    double inv = 1.0 / vol;
+    lambda[0] = n0 * inv;
+    lambda[1] = n1 * inv;
+    lambda[2] = n2 * inv;
+    lambda[3] = na * inv;
+    *point = v3(0.0, 0.0, 0.0);
+    return 0xFu;
+}
+
+/* The thin face of the tetrahedron leaving out w_k (taken = 1 + k), which
+ * holds the answer by the Gram tests: its projection by the exhaustive
+ * triangle routine (the face's own degeneracy-proof case analysis, vertices
+ * in index order as the exhaustive projection takes them), accepted when it
+ * passes the KKT test for every vertex outside its support set. Cheaper than
+ * the whole exhaustive projection, which would examine every visible face. */
+static unsigned thin_face(const agjk_vec3 *w, int taken, double lambda[4], agjk_vec3 *point) {
+    int k = taken - 1, i = k == 0 ? 1 : 0, j = k == 2 ? 1 : 2;
+    unsigned mask = tighten(project_triangle(w, 4, i, j, 3, lambda, point), lambda, 4);
+    double pp = v3_norm2(*point);
+    for (int q = 0; q < 4; ++q)
+        if (!(mask & (1u << q)) && !supports(*point, pp, w[q])) return 0u;
+    return mask;
+}
+
+static unsigned gjk_tetrahedron(const agjk_vec3 *w, int exhaustive, double lambda[4],
+                                agjk_vec3 *point) {
+    agjk_vec3 a = w[3];
+    agjk_vec3 e0 = v3_sub(w[0], a), e1 = v3_sub(w[1], a), e2 = v3_sub(w[2], a);
+    double r0 = v3_dot(a, e0), r1 = v3_dot(a, e1), r2 = v3_dot(a, e2);
+    if (r0 >= 0.0 && r1 >= 0.0 && r2 >= 0.0) return vertex_output(w, 4, lambda, point);
+    double g00 = v3_norm2(e0), g11 = v3_norm2(e1), g22 = v3_norm2(e2);
+    double g01 = v3_dot(e0, e1), g12 = v3_dot(e1, e2), g20 = v3_dot(e2, e0);
+    /* The faces through a, then its edges: the first that holds the answer;
+     * then the inside; else (beyond the previous face, borderline cases):
+     * the exhaustive projection. The face tried first leaves out the vertex
+     * with the largest <a, e_k>, the one farthest back along a (right ~90%
+     * of the time in GJK runs on ellipsoids and boxes). */
+    int back = r0 >= r1 ? (r0 >= r2 ? 0 : 2) : (r1 >= r2 ? 1 : 2);
+    int taken = 0;
+    unsigned mask;
+#define FACE_WITHOUT_0 tetra_face(w, 1, 2, 0, g11, g22, g12, g01, g20, r1, r2, r0, &taken, lambda, point)
+#define FACE_WITHOUT_1 tetra_face(w, 2, 0, 1, g22, g00, g20, g12, g01, r2, r0, r1, &taken, lambda, point)
+#define FACE_WITHOUT_2 tetra_face(w, 0, 1, 2, g00, g11, g01, g20, g12, r0, r1, r2, &taken, lambda, point)
+    mask = back == 0 ? FACE_WITHOUT_0 : back == 1 ? FACE_WITHOUT_1 : FACE_WITHOUT_2;
+    if (!mask && !taken && back != 0) mask = FACE_WITHOUT_0;
+    if (!mask && !taken && back != 1) mask = FACE_WITHOUT_1;
+    if (!mask && !taken && back != 2) mask = FACE_WITHOUT_2;
+#undef FACE_WITHOUT_0
+#undef FACE_WITHOUT_1
+#undef FACE_WITHOUT_2
+    if (!mask && !taken) {
+        mask = tetra_edge(w, 0, 1, 2, g00, g01, g20, r0, r1, r2, lambda, point);
+        if (!mask) mask = tetra_edge(w, 1, 2, 0, g11, g12, g01, r1, r2, r0, lambda, point);
+        if (!mask) mask = tetra_edge(w, 2, 0, 1, g22, g20, g12, r2, r0, r1, lambda, point);
+        /* GJK's last step on overlapping shapes: the origin enclosed. */
+        if (!mask) mask = tetra_inside(w, lambda, point);
+    }
+    if (!mask && taken) mask = thin_face(w, taken, lambda, point);
+    return mask ? mask : decline(w, 4, exhaustive, lambda, point);
+}
+
+unsigned agjk__simplex_project_gjk_fast(const agjk_vec3 *w, int n, double lambda[4],
+                                        agjk_vec3 *point) {
+    switch (n) {
+    case 1: return vertex_output(w, 1, lambda, point);
+    case 2: return gjk_segment(w, 0, lambda, point);
+    case 3: return gjk_triangle(w, 0, lambda, point);
+    default: return gjk_tetrahedron(w, 0, lambda, point);
+    }
+}
+
+unsigned agjk__simplex_project_gjk(const agjk_vec3 *w, int n, double lambda[4], agjk_vec3 *point) {
+    switch (n) {
+    case 1: return vertex_output(w, 1, lambda, point);
+    case 2: return gjk_segment(w, 1, lambda, point);
+    case 3: return gjk_triangle(w, 1, lambda, point);
+    default: return gjk_tetrahedron(w, 1, lambda, point);
+    }
+}
+
 agjk_status agjk_simplex_project_origin(const agjk_vec3 *vertices, int count,
                                         agjk_simplex_projection *projection) {
     if (!projection) return AGJK_STATUS_INVALID_INPUT;

@@ -13,4 +13,20 @@
  * is inside the (non-degenerate) tetrahedron; *point is then exactly zero. */
 unsigned agjk__simplex_project(const agjk_vec3 *p, int n, double lambda[4], agjk_vec3 *point);
 
+/* The same projection, with the same output contract, for GJK's use: w[n-1]
+ * is the support point just added and w[0..n-2] the previous simplex (the
+ * smallest face holding the previous iterate). Fast when the projection lies
+ * on a face containing w[n-1], as GJK makes likely, or when the origin is
+ * clearly inside the tetrahedron; every such answer is checked for
+ * optimality (KKT), and agjk__simplex_project decides whenever the check
+ * fails or the simplex is degenerate or ill-conditioned, so the result holds
+ * for any finite input, in any order. */
+unsigned agjk__simplex_project_gjk(const agjk_vec3 *w, int n, double lambda[4], agjk_vec3 *point);
+
+/* The fast path of agjk__simplex_project_gjk alone: the same output when it
+ * finds a candidate that passes the optimality check, else 0 with lambda and
+ * *point unspecified (for tests and measurements of the fallback rate). */
+unsigned agjk__simplex_project_gjk_fast(const agjk_vec3 *w, int n, double lambda[4],
+                                        agjk_vec3 *point);
+
 #endif

@@ -30,6 +30,12 @@ simplex-weights-permuted|src/simplex.c|s/projection->weights\[i\] = lambda\[i\];
 cone-support-biased|src/shape_cone.c|s/v3_dot(\*direction, apex) >= v3_dot(\*direction, rim)/v3_dot(*direction, apex) >= 0.9 * v3_dot(*direction, rim)/
 hill-climb-stops-early|src/shape_polytope.c|s/        if (next == current) break;/        if (next == current || steps > 2) break;/
 rotation-check-loose|src/minkowski.c|s/#define ROTATION_TOLERANCE 1e-6/#define ROTATION_TOLERANCE 1e-1/
+gjk-projection-kkt-ignored|src/simplex.c|s/return m >= 0.0 || m \* m <= OPTIMALITY_RELATIVE/return 1 || m * m <= OPTIMALITY_RELATIVE/
+gjk-projection-inside-unchecked|src/simplex.c|s/na > DEGENERATE_RELATIVE \* (vol + n0 + n1 + n2)/na > -vol/
+gjk-projection-vertex-early|src/simplex.c|s/if (r0 >= 0.0 \&\& r1 >= 0.0 \&\& r2 >= 0.0) return vertex_output/if (r0 >= 0.0 \&\& r1 >= 0.0) return vertex_output/
+gjk-projection-thin-face|src/simplex.c|s/#define WELL_CONDITIONED 1e-2/#define WELL_CONDITIONED 0.0/
+gjk-projection-foot-from-newest|src/simplex.c|s/v3_dot(nrm, w\[iq\])/v3_dot(nrm, a)/
+gjk-projection-edge-weight-by-difference|src/simplex.c|s/double s = v3_dot(b, u) \/ uu;/double s = 1.0 - (1.0 - v3_dot(b, u) \/ uu);/
 '
 TESTS="simplex shapes api analytic methods properties collide"
 escaped=0
