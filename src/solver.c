@@ -159,7 +159,7 @@ static int update_simplex(solver *sv, const agjk__vertex *s, agjk_vec3 *x) {
     }
     ++n;
     double l[4];
-    unsigned mask = agjk__simplex_project(sv->w, n, l, x);
+    unsigned mask = agjk__simplex_project_gjk(sv->w, n, l, x);
     if (mask == 0xFu) {
         for (int i = 0; i < 4; ++i) sv->lambda[i] = l[i];
         sv->count = 4;
@@ -195,7 +195,7 @@ static void update_frank_wolfe(solver *sv, const agjk__vertex *s, agjk_vec3 *x) 
     } else {
         agjk_vec3 w[2] = {sv->w[0], s->w};
         double l[4];
-        agjk__simplex_project(w, 2, l, x);
+        agjk__simplex_project_gjk(w, 2, l, x);
         if (sv->in->want_witness) {
             sv->a[0] = v3_lerp2(sv->a[0], l[0], s->a, l[1]);
             sv->b[0] = v3_lerp2(sv->b[0], l[0], s->b, l[1]);
