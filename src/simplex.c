@@ -81,8 +81,10 @@ static void keep_best(candidate *best, unsigned mask, const double lambda[4], ag
     }
 }
 
-static unsigned project_triangle(const agjk_vec3 *p, int n, int i, int j, int k, double lambda[4],
-                                 agjk_vec3 *point) {
+/* The exhaustive paths are cold since the GJK fast path decides almost every
+ * call (agjk__simplex_project_gjk): compiled for size. */
+static AGJK__COLD unsigned project_triangle(const agjk_vec3 *p, int n, int i, int j, int k,
+                                           double lambda[4], agjk_vec3 *point) {
     agjk_vec3 a = p[i], b = p[j], c = p[k];
     agjk_vec3 ab = v3_sub(b, a), bc = v3_sub(c, b), ca = v3_sub(a, c);
     double lab = v3_norm2(ab), lbc = v3_norm2(bc), lca = v3_norm2(ca);
@@ -152,7 +154,7 @@ static unsigned project_triangle(const agjk_vec3 *p, int n, int i, int j, int k,
     return best.mask;
 }
 
-static unsigned project_tetrahedron(const agjk_vec3 *p, double lambda[4], agjk_vec3 *point) {
+static AGJK__COLD unsigned project_tetrahedron(const agjk_vec3 *p, double lambda[4], agjk_vec3 *point) {
     /* Write the origin as q + mu_1 e_1 + mu_2 e_2 + mu_3 e_3 with q the vertex
      * nearest the origin and e_i the edges from it, and solve by Cramer's rule:
      * every rounding error then scales with |q| and the edge lengths rather than

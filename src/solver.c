@@ -45,7 +45,7 @@ typedef struct solver {
 /* After a support that had to lower the scale (agjk__minkowski_rescue_points),
  * brings the solver's own state to the new units. Exact: powers of two. Rare,
  * so out of line. */
-static void follow_rescale(solver *sv, agjk_vec3 *d) {
+static AGJK__NOINLINE void follow_rescale(solver *sv, agjk_vec3 *d) {
     agjk__minkowski *md = sv->md;
     double f = md->rescaled;
     md->rescaled = 1.0;
@@ -63,11 +63,14 @@ static void follow_rescale(solver *sv, agjk_vec3 *d) {
     if (!sv->in->relative) sv->abs_tolerance *= f * f;
 }
 
-/* One Minkowski support in direction d (s in the current units). */
+/* One Minkowski support in direction d (s in the current units): inline for
+ * the loop's own call, out of line for the rare ones (momentum switch-off,
+ * final certification), so that the support path is expanded once. */
 static inline void support(solver *sv, agjk_vec3 *d, agjk__vertex *s) {
     agjk__minkowski_support(sv->md, *d, s, sv->in->want_witness);
     if (sv->md->rescaled != 1.0) follow_rescale(sv, d);
 }
+static AGJK__NOINLINE void support_rare(solver *sv, agjk_vec3 *d, agjk__vertex *s) { support(sv, d, s); }
 
 /* Alg. 2: the plane of normal d through s separates D (inflated by the margins)
  * from the origin when <d, s> > ||d|| (margin + rounding): squared, with no
@@ -294,7 +297,7 @@ void agjk__solve(agjk__minkowski *md, const agjk__solve_input *in, agjk__solve_o
                 sv.m.active = 0;
                 out->momentum_stop = k;
                 d = sv.x;
-                support(&sv, &d, &s);
+                support_rare(&sv, &d, &s);
                 ++out->support_calls;
                 if (support_ends_query(&sv, d, &s, out)) break;
                 g = 2.0 * v3_dot(sv.x, v3_sub(sv.x, s.w));
@@ -374,7 +377,7 @@ void agjk__solve(agjk__minkowski *md, const agjk__solve_input *in, agjk__solve_o
     if ((out->outcome == AGJK__ITERATION_CAP || out->outcome == AGJK__STALLED ||
          out->outcome == AGJK__AT_ROUNDING) && have_x && !out->gap_valid) {
         agjk_vec3 d = sv.x;
-        support(&sv, &d, &s);
+        support_rare(&sv, &d, &s);
         ++out->support_calls;
         if (!support_ends_query(&sv, d, &s, out)) {
             agjk_vec3 xs = v3_sub(sv.x, s.w);

@@ -10,6 +10,16 @@
 
 #include "agjk/types.h"
 
+/* Keep a rarely taken path out of line, or compile it for size (GCC and
+ * clang optimise a cold function for size and move it away from hot code). */
+#if defined(__GNUC__)
+#define AGJK__NOINLINE __attribute__((noinline))
+#define AGJK__COLD __attribute__((cold))
+#else
+#define AGJK__NOINLINE
+#define AGJK__COLD
+#endif
+
 static inline agjk_vec3 v3(double x, double y, double z) {
     agjk_vec3 r;
     r.x = x;
