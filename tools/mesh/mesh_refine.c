@@ -1,11 +1,13 @@
 /* SPDX-License-Identifier: MIT */
-/* Double-precision coordinates for OFF, OBJ and ASCII PLY files.
+/* Double-precision coordinates for ASCII PLY files.
  *
  * assimp (as packaged) stores positions as float: a coordinate of 100 loses
  * about 4e-6, which for parts 0.01 apart is a 4e-4 relative distance error
- * that no solver tolerance can recover. OFF, OBJ and ASCII PLY are text, so we
- * re-read their vertex records with strtod (correctly rounded) and put the
- * doubles back in place of assimp's floats.
+ * that no solver tolerance can recover. ASCII PLY is text, so we re-read its
+ * vertex records with strtod (correctly rounded) and put the doubles back in
+ * place of assimp's floats (OFF and OBJ have their own reader, mesh_text.c).
+ * A coordinate the header declares `float` is rounded to float: the file says
+ * that is its precision, and the precision report says so.
  *
  * assimp stays the authority on what the file means (which vertices, which
  * meshes, whether it parses at all); we only upgrade precision: each float
@@ -51,54 +53,13 @@ static int list_push(fvert_list *l, const double c[3]) {
     return 1;
 }
 
-/* Reads up to three numbers from `s`; returns how many were read. */
-static int read3(const char *s, double c[3]) {
-    int n = 0;
-    char *end;
-    while (n < 3) {
-        double v = strtod(s, &end);
-        if (end == s) break;
-        c[n++] = v;
-        s = end;
-    }
-    return n;
-}
-
-/* Skips blanks (and a UTF-8 byte order mark); returns NULL for an empty or
- * comment-only line. */
-static const char *content(const char *line) {
-    if ((unsigned char)line[0] == 0xEF && (unsigned char)line[1] == 0xBB &&
-        (unsigned char)line[2] == 0xBF)
-        line += 3;
-    while (*line == ' ' || *line == '\t' || *line == '\r') line++;
-    return (*line == '\0' || *line == '\n' || *line == '#') ? NULL : line;
-}
-
-/* OBJ: every "v x y z [w | r g b]" line, in order. A lone CR ends a line
- * too (old Mac files; assimp reads them so). */
-static int read_obj(FILE *f, fvert_list *l) {
-    char line[4096];
-    while (fgets(line, sizeof line, f)) {
-        if (!strchr(line, '\n') && !feof(f)) return 0; /* over-long line: give up */
-        for (char *seg = line, *next; seg; seg = next) {
-            next = strchr(seg, '\r');
-            if (next) *next++ = '\0';
-            const char *s = content(seg);
-            if (!s || s[0] != 'v' || (s[1] != ' ' && s[1] != '\t')) continue;
-            double c[3];
-            if (read3(s + 1, c) != 3 || !list_push(l, c)) return 0;
-        }
-    }
-    return 1;
-}
-
 /* ASCII PLY: the vertex element's x, y, z properties, one vertex per line.
  * A coordinate declared `float` is rounded to float (the file says that is
  * its precision, and readers that honour the header agree); `double` keeps
  * the double. Elements before the vertices (rare) take one line per item.
  * Binary PLY stores binary floats or doubles, which assimp keeps exactly for
  * floats; we decline it (and a property list before x, y, z). */
-static int read_ply(FILE *f, fvert_list *l) {
+static int read_ply(FILE *f, fvert_list *l, int *declared_float) {
     char line[4096];
     long skip_lines = 0, count = -1;
     int in_vertex = 0, nprop = 0, axis_prop[3] = {-1, -1, -1}, axis_float[3] = {0, 0, 0};
@@ -127,6 +88,7 @@ static int read_ply(FILE *f, fvert_list *l) {
             nprop++;
         }
     }
+    *declared_float = axis_float[0] || axis_float[1] || axis_float[2];
     if (!ascii || count < 0 || count > 1000000000L || skip_lines < 0 || axis_prop[0] < 0 ||
         axis_prop[1] < 0 || axis_prop[2] < 0)
         return 0;
@@ -151,52 +113,6 @@ static int read_ply(FILE *f, fvert_list *l) {
         if (!list_push(l, c3)) return 0;
     }
     return (long)l->count == count;
-}
-
-/* OFF header: "[ST][C][N]OFF" keyword, then the counts on the same line or
- * the next content line. Returns the number of counts read (0: not OFF). */
-static int read_off_header(FILE *f, double counts[3]) {
-    char line[4096];
-    const char *s = NULL;
-    while (fgets(line, sizeof line, f) && !(s = content(line))) {}
-    if (!s) return 0;
-    size_t klen = strspn(s, "STCNOF");
-    if (klen < 3 || strncmp(s + klen - 3, "OFF", 3) != 0) return 0;
-    int n = read3(s + klen, counts);
-    while (n == 0 && fgets(line, sizeof line, f)) {
-        s = content(line);
-        if (s) n = read3(s, counts);
-    }
-    return n;
-}
-
-/* OFF: header, then one vertex per line, x y z first. Other variants (4OFF,
- * nOFF) are declined. */
-static int read_off(FILE *f, fvert_list *l, double *face_count) {
-    char line[4096];
-    const char *s;
-    double counts[3] = {0, 0, 0};
-    if (read_off_header(f, counts) < 1 || !(counts[0] >= 0 && counts[0] <= 1e9)) return 0;
-    *face_count = counts[1];
-    size_t nv = (size_t)counts[0];
-    while (l->count < nv && fgets(line, sizeof line, f)) {
-        if (!(s = content(line))) continue;
-        double c[3];
-        if (read3(s, c) != 3 || !list_push(l, c)) return 0;
-    }
-    return l->count == nv;
-}
-
-int mesh_off_counts_plausible(const char *path, long file_size) {
-    FILE *f = fopen(path, "r");
-    if (!f) return 1;
-    double counts[3] = {0, 0, 0};
-    int n = read_off_header(f, counts);
-    fclose(f);
-    if (n < 1) return 1; /* not an OFF header we know: assimp will judge */
-    /* A vertex record takes at least 6 bytes ("0 0 0\n"), a face 2 ("0\n"). */
-    double need = 6.0 * counts[0] + (n >= 2 ? 2.0 * counts[1] : 0.0);
-    return counts[0] >= 0 && (n < 2 || counts[1] >= 0) && need <= (double)file_size;
 }
 
 /* Order of float triples, exact (total for finite keys). */
@@ -267,15 +183,13 @@ static int substitute(const fvert_list *l, mesh_points *points) {
 
 int mesh_refine_double(const char *path, const char *format, mesh_points *points,
                        long *nonfinite_vertex) {
-    int is_obj = strcmp(format, "obj") == 0, is_off = strcmp(format, "off") == 0;
-    int is_ply = strcmp(format, "ply") == 0;
     *nonfinite_vertex = -1;
-    if (!is_obj && !is_off && !is_ply) return 0;
+    if (strcmp(format, "ply") != 0) return 0;
     FILE *f = fopen(path, "r");
     if (!f) return 0;
     fvert_list l = {NULL, 0, 0, -1};
-    double faces;
-    int ok = is_obj ? read_obj(f, &l) : is_off ? read_off(f, &l, &faces) : read_ply(f, &l);
+    int declared_float = 0;
+    int ok = read_ply(f, &l, &declared_float);
     fclose(f);
     if (l.nonfinite >= 0) {
         *nonfinite_vertex = l.nonfinite;
@@ -283,37 +197,14 @@ int mesh_refine_double(const char *path, const char *format, mesh_points *points
     } else if (ok && l.count > 0) { /* no vertex read: nothing to match (and no qsort(NULL)) */
         qsort(l.v, l.count, sizeof *l.v, fvert_cmp);
         ok = substitute(&l, points);
-        points->double_precision = ok;
+        if (ok) {
+            points->double_precision = !declared_float;
+            snprintf(points->precision_note, sizeof points->precision_note, "%s",
+                     declared_float ? "float (the PLY header declares float coordinates)"
+                                    : "double (re-read from the text, declared double)");
+        }
     } else {
         ok = 0;
-    }
-    free(l.v);
-    return ok;
-}
-
-int mesh_read_off_point_cloud(const char *path, mesh_points *out, long *nonfinite_vertex) {
-    FILE *f = fopen(path, "r");
-    if (!f) return 0;
-    fvert_list l = {NULL, 0, 0, -1};
-    double faces = -1;
-    int ok = read_off(f, &l, &faces) && faces == 0 && l.count > 0;
-    /* Nothing but blanks and comments may follow the vertices. */
-    char line[4096];
-    while (ok && fgets(line, sizeof line, f))
-        if (content(line)) ok = 0;
-    fclose(f);
-    *nonfinite_vertex = l.nonfinite;
-    if (ok && l.nonfinite >= 0) ok = -1;
-    if (ok == 1) {
-        out->points = malloc(l.count * sizeof *out->points);
-        if (!out->points) ok = 0;
-        for (size_t i = 0; ok && i < l.count; i++) out->points[i] = l.v[i].p;
-        if (ok) {
-            out->count = l.count;
-            out->mesh_count = 1;
-            out->face_count = 0;
-            out->double_precision = 1;
-        }
     }
     free(l.v);
     return ok;
