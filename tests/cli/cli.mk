@@ -26,10 +26,13 @@ CHECK_BINS += $(TEST_HULL_SUPPORT) $(TEST_CLI_SCRIPT)
 check-cli: $(TEST_HULL_SUPPORT) $(TEST_CLI_SCRIPT)
 	./$(TEST_HULL_SUPPORT) && ./$(TEST_CLI_SCRIPT)
 
-# By hand: agjk distance on real meshes (tools/fetch-meshes.sh) in random
-# poses against the long double reference of tests/common.
+# agjk distance with default options on random-pose mesh pairs against the
+# long double reference of tests/common: `make check` runs a fast version on
+# examples/meshes and generated point sets (150 pairs, a few seconds);
+# `make check-real-meshes` runs it on the pybullet meshes of
+# tools/fetch-meshes.sh (REAL_MESH_DIR) when present.
 REAL_MESH_DIR ?= $(OUT)/meshes/random_urdfs
-REAL_MESH_PAIRS ?= 200
+REAL_MESH_PAIRS ?= 500
 CHECK_REAL_MESHES := $(OUT)/tests/cli/check_real_meshes
 
 $(CHECK_REAL_MESHES): tests/cli/check_real_meshes.c $(OUT)/tools/mesh/libagjkmesh.a \
@@ -37,6 +40,10 @@ $(CHECK_REAL_MESHES): tests/cli/check_real_meshes.c $(OUT)/tools/mesh/libagjkmes
 	@mkdir -p $(dir $@)
 	$(CC) $(ALL_CPPFLAGS) $(MESH_CPPFLAGS) -Itests/common $(ALL_CFLAGS) $(LDFLAGS) $< -o $@ \
 	    $(OUT)/tools/mesh/libagjkmesh.a $(OUT)/tests/common/libtestcommon.a $(LIB_A) $(MESH_LIBS)
+
+# Run with no arguments (as make check does), it takes the agjk binary next to
+# it and examples/meshes of the current directory.
+CHECK_BINS += $(CHECK_REAL_MESHES)
 
 .PHONY: check-real-meshes
 check-real-meshes: $(CHECK_REAL_MESHES) $(OUT)/tools/cli/agjk
