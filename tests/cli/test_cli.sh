@@ -376,6 +376,14 @@ reader_error reader-obj-two-numbers.obj 3 "vertex with 2 numbers"
 reader_error reader-obj-hex.obj 3 "'0x1p3' is not a number"
 reader_error reader-obj-unknown.obj 4 "unknown OBJ statement 'frobnicate'"
 reader_error reader-obj-bad-index.obj 4 "'3x' is not a valid index"
+# PLY goes through assimp (in float) and the double re-read: the message names
+# the file and the vertex, and says out of range, not "not finite".
+expect_error "reader PLY 1e200 double" info "$D/reader-ply-1e200-double.ply"
+grep -q "reader-ply-1e200-double.ply: vertex 1 is out of range (limit 1e50" "$tmp/err" && ok ||
+    bad "PLY 1e200 double message: $(cat "$tmp/err")"
+expect_error "reader PLY 1e200 float" info "$D/reader-ply-1e200-float.ply"
+grep -q "reader-ply-1e200-float.ply: vertex 1 is out of range: beyond the float range" "$tmp/err" && ok ||
+    bad "PLY 1e200 float message: $(cat "$tmp/err")"
 # Numbers beyond what float or a fast parser reads: a 21-digit integer (assimp
 # read it as 0) and coordinates of 4,100 digits, read as the nearest double.
 run "reader long integer" 0 info "$D/reader-obj-long-integer.obj" --json &&

@@ -14,6 +14,10 @@
 #include <math.h>
 #include <string.h>
 
+/* "1e50": the limit as written in agjk/types.h. */
+#define LIMIT_TEXT_(x) #x
+#define LIMIT_TEXT(x) LIMIT_TEXT_(x)
+
 int cli_shape_load(const char *path, double scale, int flags, cli_shape *s) {
     char err[MESH_ERROR_SIZE];
     memset(s, 0, sizeof *s);
@@ -28,8 +32,8 @@ int cli_shape_load(const char *path, double scale, int flags, cli_shape *s) {
         p->z *= scale;
         if (!(fabs(p->x) <= AGJK_MAX_COORDINATE && fabs(p->y) <= AGJK_MAX_COORDINATE &&
               fabs(p->z) <= AGJK_MAX_COORDINATE)) {
-            cli_error("%s: vertex %zu scaled by %g is beyond the library's coordinate range "
-                      "(%g)", path, i, scale, AGJK_MAX_COORDINATE);
+            cli_error("%s: vertex %zu scaled by %g is out of range (limit %s, the library's "
+                      "coordinate range)", path, i, scale, LIMIT_TEXT(AGJK_MAX_COORDINATE));
             mesh_points_free(&s->points);
             return 0;
         }
@@ -38,8 +42,8 @@ int cli_shape_load(const char *path, double scale, int flags, cli_shape *s) {
         const agjk_vec3 *p = &s->points.points[i];
         if (!(fabs(p->x) <= AGJK_MAX_COORDINATE && fabs(p->y) <= AGJK_MAX_COORDINATE &&
               fabs(p->z) <= AGJK_MAX_COORDINATE)) {
-            cli_error("%s: vertex %zu is beyond the library's coordinate range (%g)", path, i,
-                      AGJK_MAX_COORDINATE);
+            cli_error("%s: vertex %zu is out of range (limit %s, the library's coordinate "
+                      "range)", path, i, LIMIT_TEXT(AGJK_MAX_COORDINATE));
             mesh_points_free(&s->points);
             return 0;
         }

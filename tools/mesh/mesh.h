@@ -62,8 +62,9 @@ int mesh_read_text(const char *path, const char *format, mesh_points *out, char 
  * and replaces assimp's float coordinates by them (see mesh_refine.c). Returns
  * 1 if every point was matched and replaced (then sets double_precision and
  * precision_note from the header's declared types), 0 (points unchanged)
- * otherwise, -1 if the file holds a non-finite coordinate (index in
- * *nonfinite_vertex). */
+ * otherwise, -1 if the file holds a non-finite coordinate, -2 if a finite
+ * one is beyond the float range of a coordinate declared float (vertex index
+ * in *nonfinite_vertex). */
 int mesh_refine_double(const char *path, const char *format, mesh_points *points,
                        long *nonfinite_vertex);
 

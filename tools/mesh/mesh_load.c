@@ -260,8 +260,13 @@ int mesh_load_in_process(const char *path, mesh_points *out, char *err, size_t e
     /* Re-read ASCII PLY coordinates in double (assimp stores floats). Only
      * when no transform moved the points, so file values map one-to-one. */
     long bad = -1;
-    if (ok && all_identity && mesh_refine_double(path, out->format, out, &bad) < 0) {
+    int refined = ok && all_identity ? mesh_refine_double(path, out->format, out, &bad) : 0;
+    if (refined == -1) {
         set_error(err, err_size, "%s: vertex %ld is not finite (NaN or Inf)", path, bad);
+        ok = 0;
+    } else if (refined == -2) {
+        set_error(err, err_size, "%s: vertex %ld is out of range: beyond the float range "
+                  "(3.4e38) of coordinates the PLY header declares float", path, bad);
         ok = 0;
     }
     if (ok) ok = check_finite(path, out, err, err_size);

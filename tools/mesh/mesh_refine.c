@@ -33,6 +33,7 @@ typedef struct fvert_list {
     fvert *v;
     size_t count, capacity;
     long nonfinite; /* index of the first non-finite vertex, or -1 */
+    int float_overflow; /* that vertex is finite in the text, beyond float as declared */
 } fvert_list;
 
 static int list_push(fvert_list *l, const double c[3]) {
@@ -106,11 +107,15 @@ static int read_ply(FILE *f, fvert_list *l, int *declared_float) {
             n++;
         }
         if (n < nprop && n < 64) return 0;
+        int text_finite = 1;
         for (int k = 0; k < 3; k++) {
             if (axis_prop[k] >= 64) return 0;
+            text_finite = text_finite && isfinite(v[axis_prop[k]]);
             c3[k] = axis_float[k] ? (double)(float)v[axis_prop[k]] : v[axis_prop[k]];
         }
+        long before = l->nonfinite;
         if (!list_push(l, c3)) return 0;
+        if (before < 0 && l->nonfinite >= 0) l->float_overflow = text_finite;
     }
     return (long)l->count == count;
 }
@@ -187,13 +192,13 @@ int mesh_refine_double(const char *path, const char *format, mesh_points *points
     if (strcmp(format, "ply") != 0) return 0;
     FILE *f = fopen(path, "r");
     if (!f) return 0;
-    fvert_list l = {NULL, 0, 0, -1};
+    fvert_list l = {NULL, 0, 0, -1, 0};
     int declared_float = 0;
     int ok = read_ply(f, &l, &declared_float);
     fclose(f);
     if (l.nonfinite >= 0) {
         *nonfinite_vertex = l.nonfinite;
-        ok = -1;
+        ok = l.float_overflow ? -2 : -1;
     } else if (ok && l.count > 0) { /* no vertex read: nothing to match (and no qsort(NULL)) */
         qsort(l.v, l.count, sizeof *l.v, fvert_cmp);
         ok = substitute(&l, points);
