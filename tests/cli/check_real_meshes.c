@@ -18,8 +18,9 @@
  * `agjk hull` writes for them, in a temporary directory. `make check` runs
  * the second form on examples/meshes.
  *
- * For each pair: A at the identity, B turned by a random unit quaternion and
- * placed along a random direction; a quarter of the pairs at a random centre
+ * For each pair: A at the identity (every other pair: turned too, and both
+ * moved 0.1 to 10 times their size away from the origin), B turned by a
+ * random unit quaternion and placed along a random direction from A; a quarter of the pairs at a random centre
  * distance (0.3 to 1.2 times the summed radii: many overlap), the others slid
  * (Newton steps on the reference distance) to a gap of 1e-9 to 10 times that
  * size. Checks, each counted:
@@ -208,12 +209,20 @@ typedef struct tally {
 static void run_pair(const char *agjk, int ia, int ib, int pair, tally *t) {
     mesh *a = get_mesh(ia), *b = get_mesh(ib);
     if (!a || !b) return;
-    double q[4], n = 0;
+    double q[4], qa[4] = {1, 0, 0, 0}, n = 0, na = 0;
     for (int k = 0; k < 4; k++) {
         q[k] = rng_gauss();
         n += q[k] * q[k];
     }
     for (int k = 0; k < 4; k++) q[k] /= sqrt(n);
+    /* Every other pair, A is turned too and both are placed away from the
+     * origin (by 0.1 to 10 times their size), as parts in a scene are. */
+    int general = pair % 2 == 1;
+    for (int k = 0; general && k < 4; k++) {
+        qa[k] = rng_gauss();
+        na += qa[k] * qa[k];
+    }
+    for (int k = 0; general && k < 4; k++) qa[k] /= sqrt(na);
     agjk_vec3 u = {rng_gauss(), rng_gauss(), rng_gauss()};
     double un = sqrt(u.x * u.x + u.y * u.y + u.z * u.z);
     double size = a->radius + b->radius;
@@ -223,10 +232,16 @@ static void run_pair(const char *agjk, int ia, int ib, int pair, tally *t) {
      * start clear of each other (bounding spheres about the origins). */
     double c = slide ? 1.05 * size : size * (0.3 + 0.9 * rng_uniform());
     double target = size * pow(10.0, -9.0 + 10.0 * rng_uniform());
-    agjk_vec3 tr = {c * u.x / un, c * u.y / un, c * u.z / un};
+    agjk_vec3 o = {0, 0, 0};
+    if (general) {
+        agjk_vec3 v = {rng_gauss(), rng_gauss(), rng_gauss()};
+        double vn = sqrt(v.x * v.x + v.y * v.y + v.z * v.z);
+        double m = size * pow(10.0, -1.0 + 2.0 * rng_uniform()) / vn;
+        o = (agjk_vec3){m * v.x, m * v.y, m * v.z};
+    }
+    agjk_vec3 tr = {o.x + c * u.x / un, o.y + c * u.y / un, o.z + c * u.z / un};
     agjk_pose pose_a, pose_b;
-    double qi[4] = {1, 0, 0, 0};
-    cli_pose(qi, (agjk_vec3){0, 0, 0}, &pose_a);
+    cli_pose(qa, o, &pose_a);
     cli_pose(q, tr, &pose_b);
     ref_shape ra, rb;
     memset(&ra, 0, sizeof ra);
@@ -245,14 +260,16 @@ static void run_pair(const char *agjk, int ia, int ib, int pair, tally *t) {
         double rate = (ref.normal.x * u.x + ref.normal.y * u.y + ref.normal.z * u.z) / un;
         if (fabs(gap - target) < 1e-3 * target || rate < 0.05) break;
         c -= (gap - target) / rate;
-        tr = (agjk_vec3){c * u.x / un, c * u.y / un, c * u.z / un};
+        tr = (agjk_vec3){o.x + c * u.x / un, o.y + c * u.y / un, o.z + c * u.z / un};
         cli_pose(q, tr, &pose_b);
         ref_distance(&ra, &pose_a, &rb, &pose_b, &ref);
     }
     char cmd[4096];
     snprintf(cmd, sizeof cmd,
-             "'%s' distance '%s' '%s' --json --pose-b %.17g %.17g %.17g %.17g %.17g %.17g %.17g",
-             agjk, a->path, b->path, tr.x, tr.y, tr.z, q[0], q[1], q[2], q[3]);
+             "'%s' distance '%s' '%s' --json --pose-a %.17g %.17g %.17g %.17g %.17g %.17g %.17g "
+             "--pose-b %.17g %.17g %.17g %.17g %.17g %.17g %.17g",
+             agjk, a->path, b->path, o.x, o.y, o.z, qa[0], qa[1], qa[2], qa[3], tr.x, tr.y, tr.z,
+             q[0], q[1], q[2], q[3]);
     FILE *f = popen(cmd, "r");
     char out[4096] = "";
     size_t len = f ? fread(out, 1, sizeof out - 1, f) : 0;
@@ -267,7 +284,8 @@ static void run_pair(const char *agjk, int ia, int ib, int pair, tally *t) {
     if ((p = strstr(out, "\"bound\": "))) bound = strtod(p + 9, NULL);
     /* The problem's size: largest world-frame vertex norm. */
     double tn = sqrt(tr.x * tr.x + tr.y * tr.y + tr.z * tr.z);
-    double scale = fmax(a->radius, tn + b->radius);
+    double on = sqrt(o.x * o.x + o.y * o.y + o.z * o.z);
+    double scale = fmax(on + a->radius, tn + b->radius);
     const char *why = NULL;
     t->pairs++;
     t->overlapping += ref.intersecting;

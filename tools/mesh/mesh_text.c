@@ -122,7 +122,7 @@ static int check_text(reader *r, const char *format) {
 
 /* Cuts the next line (without its end and comment) out of the buffer;
  * returns NULL at the end of the file. `continuation`: a line ending in '\'
- * goes on with the next one (OBJ). */
+ * goes on with the next one (OBJ), unless the '\' ends a comment. */
 static char *next_line(reader *r, int continuation) {
     if (r->next >= r->buf + r->len) return NULL;
     char *start = r->next, *s = start;
@@ -136,7 +136,8 @@ static char *next_line(reader *r, int continuation) {
         /* A '\' just before the line end (blanks allowed after it). */
         char *b = end;
         while (b > start && (b[-1] == ' ' || b[-1] == '\t')) b--;
-        if (continuation && *end && b > start && b[-1] == '\\') {
+        if (continuation && *end && b > start && b[-1] == '\\' &&
+            !memchr(start, '#', (size_t)(b - start))) { /* not inside a comment */
             b[-1] = ' ';
             for (char *c = end; c < s; c++) *c = ' ';
             continue;
