@@ -20,7 +20,9 @@
  *
  * For each pair: A at the identity (every other pair: turned too, and both
  * moved 0.1 to 10 times their size away from the origin), B turned by a
- * random unit quaternion and placed along a random direction from A; a quarter of the pairs at a random centre
+ * random unit quaternion (every fourth pair: a rotation with an exact matrix,
+ * so that faces parallel in the files stay parallel) and placed along a
+ * random direction from A; a quarter of the pairs at a random centre
  * distance (0.3 to 1.2 times the summed radii: many overlap), the others slid
  * (Newton steps on the reference distance) to a gap of 1e-9 to 10 times that
  * size. Checks, each counted:
@@ -215,6 +217,21 @@ static void run_pair(const char *agjk, int ia, int ib, int pair, tally *t) {
         n += q[k] * q[k];
     }
     for (int k = 0; k < 4; k++) q[k] /= sqrt(n);
+    /* Every fourth pair, B is turned by one of the 12 rotations whose matrix
+     * is exact (identity, half turns about the axes, third turns about the
+     * diagonals), so that faces parallel in the files stay exactly parallel,
+     * as parts placed side by side in a scene are. */
+    int exact = pair % 4 == 2;
+    if (exact) {
+        int r = (int)(rng_next() % 12);
+        for (int k = 0; k < 4; k++) q[k] = 0;
+        if (r < 4) {
+            q[r] = 1;
+        } else {
+            q[0] = 0.5;
+            for (int k = 1; k < 4; k++) q[k] = ((r - 4) >> (k - 1)) & 1 ? -0.5 : 0.5;
+        }
+    }
     /* Every other pair, A is turned too and both are placed away from the
      * origin (by 0.1 to 10 times their size), as parts in a scene are. */
     int general = pair % 2 == 1;
