@@ -5,10 +5,11 @@
  * double, so --scale-a 1000 turns a file in metres into millimetres exactly
  * as a caller would.
  *
- * A query on a large point set skips the hull: Qhull takes about 5 s for a
- * million points on a sphere, a scan support about 2 ms per call for as many,
- * and one query makes tens of calls; the answer is the same (the support
- * function of a point set is that of its hull). */
+ * A query on a large point set skips the hull: for 1,000,000 points on a
+ * sphere Qhull took 6.5 to 9 s of CPU, a whole query with scan supports 0.03 s
+ * (a few ms per support call; a hard query makes tens to hundreds of calls);
+ * the answer is the same (the support function of a point set is that of its
+ * hull). */
 #include "cli.h"
 
 #include <math.h>

@@ -99,9 +99,9 @@ int mesh_hull_build(const agjk_vec3 *points, size_t count, int with_adjacency, m
                     char *err, size_t err_size);
 /* The shape data without a hull: every input point is a vertex and the
  * support is a scan (exact: the support function of a point set is that of
- * its hull). Costs O(count), where Qhull costs about 5 microseconds per point
- * on a large sphere-like set: the cheaper choice for a few queries on a large
- * set. Returns 1 on success, 0 with a message in `err`. */
+ * its hull). Costs O(count), where Qhull took 6.5 to 9 microseconds of CPU
+ * per point on 1,000,000 points of a sphere: the cheaper choice for a few
+ * queries on a large set. Returns 1 on success, 0 with a message in `err`. */
 int mesh_hull_points_only(const agjk_vec3 *points, size_t count, mesh_hull *hull, char *err,
                           size_t err_size);
 void mesh_hull_free(mesh_hull *hull);
