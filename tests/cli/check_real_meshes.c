@@ -212,6 +212,7 @@ static void run_pair(const char *agjk, int ia, int ib, int pair, tally *t) {
     mesh *a = get_mesh(ia), *b = get_mesh(ib);
     if (!a || !b) return;
     double q[4], qa[4] = {1, 0, 0, 0}, n = 0, na = 0;
+    agjk_vec3 lateral = {0, 0, 0};
     for (int k = 0; k < 4; k++) {
         q[k] = rng_gauss();
         n += q[k] * q[k];
@@ -241,9 +242,18 @@ static void run_pair(const char *agjk, int ia, int ib, int pair, tally *t) {
     }
     for (int k = 0; general && k < 4; k++) qa[k] /= sqrt(na);
     agjk_vec3 u = {rng_gauss(), rng_gauss(), rng_gauss()};
-    double un = sqrt(u.x * u.x + u.y * u.y + u.z * u.z);
     double size = a->radius + b->radius;
     if (!(size > 0)) size = 1;
+    if (exact) {
+        /* ... and B is moved along a coordinate axis, with a sideways offset
+         * of up to half the size: faces meet face to face. */
+        int axis = (int)(rng_next() % 3);
+        double side[3] = {rng_uniform() - 0.5, rng_uniform() - 0.5, rng_uniform() - 0.5};
+        side[axis] = 0;
+        u = (agjk_vec3){axis == 0, axis == 1, axis == 2};
+        lateral = (agjk_vec3){side[0] * size, side[1] * size, side[2] * size};
+    }
+    double un = sqrt(u.x * u.x + u.y * u.y + u.z * u.z);
     int slide = pair % 4 != 0;
     /* Centre distance: from deep overlap to clear separation; slid pairs
      * start clear of each other (bounding spheres about the origins). */
@@ -256,7 +266,8 @@ static void run_pair(const char *agjk, int ia, int ib, int pair, tally *t) {
         double m = size * pow(10.0, -1.0 + 2.0 * rng_uniform()) / vn;
         o = (agjk_vec3){m * v.x, m * v.y, m * v.z};
     }
-    agjk_vec3 tr = {o.x + c * u.x / un, o.y + c * u.y / un, o.z + c * u.z / un};
+    agjk_vec3 base = {o.x + lateral.x, o.y + lateral.y, o.z + lateral.z}; /* B before the slide */
+    agjk_vec3 tr = {base.x + c * u.x / un, base.y + c * u.y / un, base.z + c * u.z / un};
     agjk_pose pose_a, pose_b;
     cli_pose(qa, o, &pose_a);
     cli_pose(q, tr, &pose_b);
@@ -277,7 +288,7 @@ static void run_pair(const char *agjk, int ia, int ib, int pair, tally *t) {
         double rate = (ref.normal.x * u.x + ref.normal.y * u.y + ref.normal.z * u.z) / un;
         if (fabs(gap - target) < 1e-3 * target || rate < 0.05) break;
         c -= (gap - target) / rate;
-        tr = (agjk_vec3){o.x + c * u.x / un, o.y + c * u.y / un, o.z + c * u.z / un};
+        tr = (agjk_vec3){base.x + c * u.x / un, base.y + c * u.y / un, base.z + c * u.z / un};
         cli_pose(q, tr, &pose_b);
         ref_distance(&ra, &pose_a, &rb, &pose_b, &ref);
     }

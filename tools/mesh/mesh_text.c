@@ -33,6 +33,7 @@
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 /* "1e50": the limit as written in agjk/types.h. */
 #define LIMIT_TEXT_(x) #x
@@ -69,7 +70,11 @@ static int read_file(reader *r, const char *path, char *err, size_t err_size) {
         snprintf(err, err_size, "%s: %s", path, strerror(errno));
         return 0;
     }
+    /* Sized by the file (grown if it grows while we read). */
+    struct stat st;
     size_t cap = 1 << 16, len = 0;
+    if (fstat(fileno(f), &st) == 0 && st.st_size > 0 && (uintmax_t)st.st_size < SIZE_MAX / 2)
+        cap = (size_t)st.st_size + 1;
     char *buf = NULL;
     for (;;) {
         char *bigger = realloc(buf, cap + 1);
