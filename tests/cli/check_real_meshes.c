@@ -12,7 +12,8 @@
  *
  * Meshes: MESH_DIR/NNN/NNN.obj (the pybullet random_urdfs set that
  * tools/fetch-meshes.sh fetches) when present; otherwise every .off and .obj
- * file directly in MESH_DIR (e.g. examples/meshes) plus generated point sets
+ * file directly in MESH_DIR (examples/meshes, or the robot links and household
+ * objects of fetch-meshes.sh's pybullet_data directory) plus generated point sets
  * (stiff ellipsoid, thin plate, needle, random cloud, sphere, and boxes with
  * grids of points on their faces, like CAD parts) and the hull files that
  * `agjk hull` writes for them, in a temporary directory. `make check` runs
@@ -387,7 +388,7 @@ int main(int argc, char **argv) {
             generated = 1;
             add_generated(agjk, tmpdir);
         }
-        set = "sample meshes and generated point sets";
+        set = "the directory's files and generated point sets";
     }
     if (mesh_count == 0) {
         fprintf(stderr, "check_real_meshes: no meshes under %s\n", dir);

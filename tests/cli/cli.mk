@@ -30,9 +30,11 @@ check-cli: $(TEST_HULL_SUPPORT) $(TEST_CLI_SCRIPT)
 # long double reference of tests/common: `make check` runs a fast version on
 # examples/meshes and generated point sets (150 pairs, a few seconds);
 # `make check-real-meshes` runs it on the pybullet meshes of
-# tools/fetch-meshes.sh (REAL_MESH_DIR) when present.
+# tools/fetch-meshes.sh (REAL_MESH_DIR: random objects; REAL_MESH_DIR2: robot
+# links and household objects), each directory that is present.
 REAL_MESH_DIR ?= $(OUT)/meshes/random_urdfs
-REAL_MESH_PAIRS ?= 500
+REAL_MESH_DIR2 ?= $(OUT)/meshes/pybullet_data
+REAL_MESH_PAIRS ?= 1000
 CHECK_REAL_MESHES := $(OUT)/tests/cli/check_real_meshes
 
 $(CHECK_REAL_MESHES): tests/cli/check_real_meshes.c $(OUT)/tools/mesh/libagjkmesh.a \
@@ -47,4 +49,9 @@ CHECK_BINS += $(CHECK_REAL_MESHES)
 
 .PHONY: check-real-meshes
 check-real-meshes: $(CHECK_REAL_MESHES) $(OUT)/tools/cli/agjk
-	./$(CHECK_REAL_MESHES) $(OUT)/tools/cli/agjk $(REAL_MESH_DIR) $(REAL_MESH_PAIRS)
+	@fail=0; ran=0; for d in $(REAL_MESH_DIR) $(REAL_MESH_DIR2); do \
+	    test -d $$d || continue; ran=1; \
+	    ./$(CHECK_REAL_MESHES) $(OUT)/tools/cli/agjk $$d $(REAL_MESH_PAIRS) || fail=1; \
+	done; \
+	if [ $$ran -eq 0 ]; then echo "no $(REAL_MESH_DIR) or $(REAL_MESH_DIR2): run tools/fetch-meshes.sh $(OUT)/meshes"; exit 1; fi; \
+	test $$fail -eq 0
