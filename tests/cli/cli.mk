@@ -53,5 +53,8 @@ check-real-meshes: $(CHECK_REAL_MESHES) $(OUT)/tools/cli/agjk
 	    test -d $$d || continue; ran=1; \
 	    ./$(CHECK_REAL_MESHES) $(OUT)/tools/cli/agjk $$d $(REAL_MESH_PAIRS) || fail=1; \
 	done; \
-	if [ $$ran -eq 0 ]; then echo "no $(REAL_MESH_DIR) or $(REAL_MESH_DIR2): run tools/fetch-meshes.sh $(OUT)/meshes"; exit 1; fi; \
+	if [ $$ran -eq 0 ]; then \
+	    echo "no $(REAL_MESH_DIR) or $(REAL_MESH_DIR2): run tools/fetch-meshes.sh $(OUT)/meshes"; \
+	    exit 1; \
+	fi; \
 	test $$fail -eq 0
