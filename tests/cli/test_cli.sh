@@ -376,6 +376,9 @@ reader_error reader-obj-two-numbers.obj 3 "vertex with 2 numbers"
 reader_error reader-obj-hex.obj 3 "'0x1p3' is not a number"
 reader_error reader-obj-unknown.obj 4 "unknown OBJ statement 'frobnicate'"
 reader_error reader-obj-bad-index.obj 4 "'3x' is not a valid index"
+reader_error reader-off-crlf-bom.off 6 "'x' is not a number"
+run "reader line ends" 0 info "$D/reader-obj-line-ends.obj" --json &&
+    check_json "OBJ continuation, CR, CRLF" "r['vertices'] == 4 and r['bbox_max'] == [1, 1, 1] and r['faces'] == 1"
 # PLY goes through assimp (in float) and the double re-read: the message names
 # the file and the vertex, and says out of range, not "not finite".
 expect_error "reader PLY 1e200 double" info "$D/reader-ply-1e200-double.ply"
