@@ -2,9 +2,9 @@
 /* Mesh loading: OFF and OBJ by our strict reader (mesh_text.c), every other
  * format through assimp's C API.
  *
- * From assimp we keep only positions: a convex shape is the hull of every vertex of every
- * mesh in the scene, each mapped to the root frame by the product of the node
- * transforms above it (computed in double). Faces, normals and materials are
+ * From assimp we keep only positions: a convex shape is the hull of every
+ * vertex of every mesh in the scene, each mapped to the root frame by the
+ * product of the node transforms above it (computed in double). Faces, normals and materials are
  * ignored, so point clouds and line-only files load too.
  *
  * assimp is a large C++ parser fed untrusted files, so we check what we can
