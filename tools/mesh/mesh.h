@@ -58,15 +58,27 @@ void mesh_points_free(mesh_points *points);
 int mesh_read_text(const char *path, const char *format, mesh_points *out, char *err,
                    size_t err_size);
 
-/* Re-reads the vertex coordinates of an ASCII PLY file in double precision
- * and replaces assimp's float coordinates by them (see mesh_refine.c). Returns
- * 1 if every point was matched and replaced (then sets double_precision and
- * precision_note from the header's declared types), 0 (points unchanged)
- * otherwise, -1 if the file holds a non-finite coordinate, -2 if a finite
- * one is beyond the float range of a coordinate declared float (vertex index
- * in *nonfinite_vertex). */
-int mesh_refine_double(const char *path, const char *format, mesh_points *points,
-                       long *nonfinite_vertex);
+/* The numbers of the text formats: [+-] digits [. digits] [(e|E) [+-] digits],
+ * converted by strtod (the double nearest to the text). Returns MESH_NUMBER_OK
+ * with *value set, or why the token is not a coordinate. */
+enum {
+    MESH_NUMBER_OK = 0,
+    MESH_NUMBER_NOT_A_NUMBER,
+    MESH_NUMBER_NOT_FINITE,  /* NaN, Inf */
+    MESH_NUMBER_OUT_OF_RANGE /* magnitude beyond AGJK_MAX_COORDINATE */
+};
+int mesh_parse_coordinate(const char *token, double *value);
+/* The message for a code of mesh_parse_coordinate(), quoting the token. */
+void mesh_coordinate_error(int code, const char *token, char *msg, size_t size);
+
+/* ASCII PLY: replaces assimp's float points by every vertex record of the
+ * file, read as text (see mesh_refine.c): a coordinate declared double is the
+ * double nearest to the text, one declared float the float nearest to it;
+ * sets double_precision and precision_note accordingly. Returns 1 if done; 0
+ * (points unchanged) for another format or a layout this reader declines; -1
+ * with "FILE:LINE: what is wrong" in `err` for a malformed vertex record. */
+int mesh_refine_double(const char *path, const char *format, mesh_points *points, char *err,
+                       size_t err_size);
 
 /* Convex hull of a point set. */
 typedef struct mesh_hull {

@@ -257,18 +257,10 @@ int mesh_load_in_process(const char *path, mesh_points *out, char *err, size_t e
     aiReleaseImport(scene);
     snprintf(out->precision_note, sizeof out->precision_note, "%s",
              "float (as assimp stores it)");
-    /* Re-read ASCII PLY coordinates in double (assimp stores floats). Only
-     * when no transform moved the points, so file values map one-to-one. */
-    long bad = -1;
-    int refined = ok && all_identity ? mesh_refine_double(path, out->format, out, &bad) : 0;
-    if (refined == -1) {
-        set_error(err, err_size, "%s: vertex %ld is not finite (NaN or Inf)", path, bad);
+    /* ASCII PLY: the vertex records as text, in double (assimp stores
+     * floats). Only when no transform moved the points (PLY has none). */
+    if (ok && all_identity && mesh_refine_double(path, out->format, out, err, err_size) < 0)
         ok = 0;
-    } else if (refined == -2) {
-        set_error(err, err_size, "%s: vertex %ld is out of range: beyond the float range "
-                  "(3.4e38) of coordinates the PLY header declares float", path, bad);
-        ok = 0;
-    }
     if (ok) ok = check_finite(path, out, err, err_size);
     if (!ok) mesh_points_free(out);
     return ok;

@@ -207,23 +207,35 @@ static int is_nonfinite_word(const char *t) {
     return strcmp(w, "nan") == 0 || strcmp(w, "inf") == 0;
 }
 
+int mesh_parse_coordinate(const char *t, double *value) {
+    if (!is_decimal(t))
+        return is_nonfinite_word(t) ? MESH_NUMBER_NOT_FINITE : MESH_NUMBER_NOT_A_NUMBER;
+    double v = strtod(t, NULL);
+    if (!(fabs(v) <= AGJK_MAX_COORDINATE)) return MESH_NUMBER_OUT_OF_RANGE;
+    *value = v;
+    return MESH_NUMBER_OK;
+}
+
+void mesh_coordinate_error(int code, const char *t, char *msg, size_t size) {
+    char b[64];
+    if (code == MESH_NUMBER_NOT_FINITE)
+        snprintf(msg, size, "coordinate '%s' is not finite (NaN or Inf)", shown(t, b, sizeof b));
+    else if (code == MESH_NUMBER_OUT_OF_RANGE)
+        snprintf(msg, size, "coordinate '%s' is out of range (limit %s)", shown(t, b, sizeof b),
+                 LIMIT_TEXT(AGJK_MAX_COORDINATE));
+    else
+        snprintf(msg, size, "'%s' is not a number", shown(t, b, sizeof b));
+}
+
 /* A coordinate: a decimal number of magnitude at most AGJK_MAX_COORDINATE. */
 static int coordinate(reader *r, const char *t, double *out) {
-    char b[64];
-    if (!is_decimal(t)) {
-        if (is_nonfinite_word(t))
-            fail(r, "coordinate '%s' is not finite (NaN or Inf)", shown(t, b, sizeof b));
-        else
-            fail(r, "'%s' is not a number", shown(t, b, sizeof b));
+    int code = mesh_parse_coordinate(t, out);
+    if (code != MESH_NUMBER_OK) {
+        char msg[160];
+        mesh_coordinate_error(code, t, msg, sizeof msg);
+        fail(r, "%s", msg);
         return 0;
     }
-    double v = strtod(t, NULL);
-    if (!(fabs(v) <= AGJK_MAX_COORDINATE)) {
-        fail(r, "coordinate '%s' is out of range (limit %s)", shown(t, b, sizeof b),
-             LIMIT_TEXT(AGJK_MAX_COORDINATE));
-        return 0;
-    }
-    *out = v;
     return 1;
 }
 
