@@ -210,7 +210,11 @@ static int is_nonfinite_word(const char *t) {
 int mesh_parse_coordinate(const char *t, double *value) {
     if (!is_decimal(t))
         return is_nonfinite_word(t) ? MESH_NUMBER_NOT_FINITE : MESH_NUMBER_NOT_A_NUMBER;
-    double v = strtod(t, NULL);
+    char *end;
+    double v = strtod(t, &end);
+    /* strtod follows LC_NUMERIC: in a decimal-comma locale it would stop at
+     * the '.', so a partial conversion is refused rather than misread. */
+    if (*end) return MESH_NUMBER_NOT_A_NUMBER;
     if (!(fabs(v) <= AGJK_MAX_COORDINATE)) return MESH_NUMBER_OUT_OF_RANGE;
     *value = v;
     return MESH_NUMBER_OK;
