@@ -5,7 +5,9 @@
 #
 #   tools/fetch-meshes.sh [DEST]     (default DEST: out/meshes)
 #
-# Result: DEST/random_urdfs/NNN/NNN.obj; `make bench` then adds the mesh
+# Result: DEST/random_urdfs/NNN/NNN.obj, and the other OBJ meshes of
+# pybullet_data (robot links, household objects) in DEST/pybullet_data/ for
+# `make check-real-meshes`; `make bench` then adds the mesh
 # benchmark (agjk-bench --mesh-dir DEST/random_urdfs). Needs python3 with pip
 # and network access (or PYBULLET_WHEEL=/path/to/the/wheel). One object of the set has NaN vertices: it is kept on
 # disk as shipped, reported here, and skipped with a warning by agjk-bench.
@@ -62,4 +64,19 @@ with zipfile.ZipFile(wheel) as z:
 print("fetch-meshes: %d OBJ files in %s/random_urdfs" % (count, dest), file=sys.stderr)
 if count == 0:
     sys.exit("fetch-meshes: no pybullet_data/random_urdfs/*/*.obj in the wheel")
+# The other meshes of pybullet_data (robot links, household objects: CAD-like
+# parts with large flat faces), flattened into one directory for
+# check_real_meshes (make check-real-meshes).
+other = os.path.join(dest, "pybullet_data")
+os.makedirs(other, exist_ok=True)
+others = 0
+with zipfile.ZipFile(wheel) as z:
+    for name in z.namelist():
+        if (name.startswith("pybullet_data/") and name.lower().endswith(".obj")
+                and not name.startswith("pybullet_data/random_urdfs/")):
+            flat = name[len("pybullet_data/"):].replace("/", "__")
+            with open(os.path.join(other, flat), "wb") as f:
+                f.write(z.read(name))
+            others += 1
+print("fetch-meshes: %d other OBJ files in %s" % (others, other), file=sys.stderr)
 PY

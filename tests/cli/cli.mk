@@ -26,10 +26,15 @@ CHECK_BINS += $(TEST_HULL_SUPPORT) $(TEST_CLI_SCRIPT)
 check-cli: $(TEST_HULL_SUPPORT) $(TEST_CLI_SCRIPT)
 	./$(TEST_HULL_SUPPORT) && ./$(TEST_CLI_SCRIPT)
 
-# By hand: agjk distance on real meshes (tools/fetch-meshes.sh) in random
-# poses against the long double reference of tests/common.
+# agjk distance with default options on random-pose mesh pairs against the
+# long double reference of tests/common: `make check` runs a fast version on
+# examples/meshes and generated point sets (150 pairs, a few seconds);
+# `make check-real-meshes` runs it on the pybullet meshes of
+# tools/fetch-meshes.sh (REAL_MESH_DIR: random objects; REAL_MESH_DIR2: robot
+# links and household objects), each directory that is present.
 REAL_MESH_DIR ?= $(OUT)/meshes/random_urdfs
-REAL_MESH_PAIRS ?= 200
+REAL_MESH_DIR2 ?= $(OUT)/meshes/pybullet_data
+REAL_MESH_PAIRS ?= 1000
 CHECK_REAL_MESHES := $(OUT)/tests/cli/check_real_meshes
 
 $(CHECK_REAL_MESHES): tests/cli/check_real_meshes.c $(OUT)/tools/mesh/libagjkmesh.a \
@@ -38,6 +43,18 @@ $(CHECK_REAL_MESHES): tests/cli/check_real_meshes.c $(OUT)/tools/mesh/libagjkmes
 	$(CC) $(ALL_CPPFLAGS) $(MESH_CPPFLAGS) -Itests/common $(ALL_CFLAGS) $(LDFLAGS) $< -o $@ \
 	    $(OUT)/tools/mesh/libagjkmesh.a $(OUT)/tests/common/libtestcommon.a $(LIB_A) $(MESH_LIBS)
 
+# Run with no arguments (as make check does), it takes the agjk binary next to
+# it and examples/meshes of the current directory.
+CHECK_BINS += $(CHECK_REAL_MESHES)
+
 .PHONY: check-real-meshes
 check-real-meshes: $(CHECK_REAL_MESHES) $(OUT)/tools/cli/agjk
-	./$(CHECK_REAL_MESHES) $(OUT)/tools/cli/agjk $(REAL_MESH_DIR) $(REAL_MESH_PAIRS)
+	@fail=0; ran=0; for d in $(REAL_MESH_DIR) $(REAL_MESH_DIR2); do \
+	    test -d $$d || continue; ran=1; \
+	    ./$(CHECK_REAL_MESHES) $(OUT)/tools/cli/agjk $$d $(REAL_MESH_PAIRS) || fail=1; \
+	done; \
+	if [ $$ran -eq 0 ]; then \
+	    echo "no $(REAL_MESH_DIR) or $(REAL_MESH_DIR2): run tools/fetch-meshes.sh $(OUT)/meshes"; \
+	    exit 1; \
+	fi; \
+	test $$fail -eq 0

@@ -254,7 +254,7 @@ run "duplicates" 0 info "$tmp/dups.off" --json 2>/dev/null && check_json "duplic
 # Double precision: coordinates that float cannot hold survive (OFF and OBJ).
 printf 'OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n0 0 0.10000000000000001\n3 0 1 2\n3 0 1 3\n' >"$tmp/thin.off"
 distance_is "double precision coordinates" "3 - 0.10000000000000001 - 0.5" 1e-13 "$tmp/thin.off" "$C" --pose-b 0 0 3 1 0 0 0
-printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1.0000001192092896\nv 0 0 1.00000001\nf 1 2 3\nf 1 2 5\n' >"$tmp/near.obj"
+printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1.00000001\nv 0 0 1.0000000099999999\nf 1 2 3\nf 1 2 5\n' >"$tmp/near.obj"
 distance_is "double precision OBJ" "3 - 1.00000001 - 0.5" 1e-13 "$tmp/near.obj" "$C" --pose-b 0 0 3 1 0 0 0
 printf 'ply\nformat ascii 1.0\ncomment c\nelement vertex 4\nproperty double x\nproperty double y\nproperty double z\nproperty uchar red\nelement face 2\nproperty list uchar int vertex_indices\nend_header\n0 0 0 1\n1 0 0 2\n0 1 0 3\n0 0 0.10000000000000001 4\n3 0 1 2\n3 0 1 3\n' >"$tmp/double.ply"
 distance_is "double precision PLY" "2.4" 1e-13 "$tmp/double.ply" "$C" --pose-b 0 0 3 1 0 0 0
@@ -385,6 +385,100 @@ for f in "$tmp"/mut_*; do
     else ok; fi
 done
 crash_env=
+
+# --- mesh reader: strict OFF/OBJ, every vertex, true precision, large files -------------
+# Each malformed fixture of tests/cli/data/reader-* is an error (exit 2) whose
+# message starts with FILE:LINE: and says what is wrong.
+D=$SRC/tests/cli/data
+reader_error() {  # FIXTURE LINE PHRASE
+    expect_error "reader $1" distance "$D/$1" "$C" || return
+    grep -q "$D/$1:$2: .*$3" "$tmp/err" && ok ||
+        bad "reader $1: expected '$D/$1:$2: ...$3', got: $(head -c 300 "$tmp/err")"
+}
+reader_error reader-off-index-range.off 8 "index 99999999 is out of range"
+reader_error reader-off-negative-index.off 7 "index -1 is out of range"
+reader_error reader-off-empty-faces.off 6 "vertex count '0' is not a positive integer"
+reader_error reader-off-short-face.off 8 "declares 3 vertices but lists 2"
+reader_error reader-off-missing-face.off 7 "ends after 1 of the 2 faces"
+reader_error reader-off-missing-vertex.off 5 "ends after 3 of the 4 vertices"
+reader_error reader-off-extra-face.off 8 "unexpected data after the 1 faces"
+reader_error reader-off-1e200.off 4 "'1e200' is out of range (limit 1e50)"
+reader_error reader-off-not-number.off 5 "'1,5' is not a number"
+reader_error reader-off-two-numbers.off 5 "has 2 numbers"
+reader_error reader-off-no-face-count.off 2 "face count is missing"
+reader_error reader-off-4d.off 1 "unsupported OFF variant '4OFF'"
+reader_error reader-obj-1e200.obj 2 "'1e200' is out of range (limit 1e50)"
+reader_error reader-obj-nan.obj 4 "'nan' is not finite"
+reader_error reader-obj-index-range.obj 4 "v index 4 is out of range"
+reader_error reader-obj-relative-range.obj 4 "relative v index -4 .* out of range"
+reader_error reader-obj-index-zero.obj 4 "index 0"
+reader_error reader-obj-vt-range.obj 5 "vt index 2 is out of range"
+reader_error reader-obj-two-numbers.obj 3 "vertex with 2 numbers"
+reader_error reader-obj-hex.obj 3 "'0x1p3' is not a number"
+reader_error reader-obj-unknown.obj 4 "unknown OBJ statement 'frobnicate'"
+reader_error reader-obj-bad-index.obj 4 "'3x' is not a valid index"
+reader_error reader-off-crlf-bom.off 6 "'x' is not a number"
+run "reader line ends" 0 info "$D/reader-obj-line-ends.obj" --json &&
+    check_json "OBJ continuation, CR, CRLF" "r['vertices'] == 4 and r['bbox_max'] == [1, 1, 1] and r['faces'] == 1"
+# ASCII PLY: assimp judges the file, then its vertex records are read as text
+# (strict numbers, file:line messages; declared float stays float).
+reader_error reader-ply-1e200-double.ply 11 "vertex 1: coordinate '1e200' is out of range (limit 1e50)"
+reader_error reader-ply-1e45-float.ply 11 "vertex 1: .*out of range for the float the header declares"
+run "reader PLY 21-digit integer" 0 info "$D/reader-ply-long-integer.ply" --json &&
+    check_json "PLY 21-digit integer read exactly" "r['bbox_max'][0] == 111111111111111111111.0 and r['double_precision']"
+# Numbers beyond what float or a fast parser reads: a 21-digit integer (assimp
+# read it as 0) and coordinates of 4,100 digits, read as the nearest double.
+run "reader long integer" 0 info "$D/reader-obj-long-integer.obj" --json &&
+    check_json "21-digit integer read exactly" "r['bbox_max'][0] == 111111111111111111111.0 and r['vertices'] == 4"
+run "reader long integer collides" 0 collide "$D/reader-obj-long-integer.obj" "$C" --pose-b 5e19 0 0 1 0 0 0 && ok
+python3 -c '
+import sys
+open(sys.argv[1], "w").write("v 0.%s 0 0\nv 0 1 0\nv 0 0 1\nv -%s 0 0\n" % ("9" * 4100, "1" + "0" * 40 + "." + "0" * 4059))
+open(sys.argv[2], "w").write("v 0 0 0\nv 1 0 0\nv 1%s 0 0\n" % ("0" * 4099))
+open(sys.argv[3], "w").write("ply\nformat ascii 1.0\nelement vertex 4\nproperty double x\n"
+    "property double y\nproperty double z\nend_header\n" + "".join(
+    l[2:] + "\n" for l in open(sys.argv[1]).read().splitlines()))' \
+    "$tmp/digits.obj" "$tmp/digits-overflow.obj" "$tmp/digits.ply"
+run "reader 4100 digits" 0 info "$tmp/digits.obj" --json &&
+    check_json "4100-digit coordinates" "r['bbox_max'][0] == 1.0 and r['bbox_min'][0] == -1e40"
+run "reader 4100 digits PLY" 0 info "$tmp/digits.ply" --json &&
+    check_json "4100-digit coordinates in PLY" "r['bbox_max'][0] == 1.0 and r['bbox_min'][0] == -1e40"
+expect_error "reader 4100-digit overflow" info "$tmp/digits-overflow.obj"
+grep -q "digits-overflow.obj:3: .*out of range (limit 1e50)" "$tmp/err" && ok || bad "4100-digit overflow message: $(cat "$tmp/err")"
+# Vertices no face uses are points of the shape (OFF and OBJ).
+run "reader unused OBJ vertices" 0 info "$D/reader-obj-unused.obj" --json &&
+    check_json "unused OBJ vertices count" "r['vertices'] == 6 and r['bbox_min'] == [-2, 0, 0] and r['bbox_max'] == [3, 3, 3]"
+distance_is "unused OBJ vertex is the closest" 0.5 1e-12 "$D/reader-obj-unused.obj" "$C" --pose-b 3 3 4 1 0 0 0
+run "reader unused OFF vertex" 0 info "$D/reader-off-unused.off" --json &&
+    check_json "unused OFF vertex counts" "r['vertices'] == 5 and r['bbox_max'] == [1, 1, 5]"
+distance_is "unused OFF vertex" 1.5 1e-12 "$D/reader-off-unused.off" "$C" --pose-b 0 0 7 1 0 0 0
+# Valid records of all kinds: colours after OFF vertices and faces; vt, vn, groups, l, p in OBJ.
+run "reader COFF colours" 0 info "$D/reader-off-colours.off" --json &&
+    check_json "COFF" "r['vertices'] == 4 and r['hull_vertices'] == 4"
+run "reader OBJ records" 0 info "$D/reader-obj-records.obj" --json &&
+    check_json "OBJ records" "r['vertices'] == 4 and r['faces'] == 4 and r['double_precision']"
+# Precision report: a PLY declaring float is float; declared double is double.
+run "reader float PLY precision" 0 info "$tmp/float.ply" --json &&
+    check_json "float PLY is reported float" "r['double_precision'] is False"
+run "reader double PLY precision" 0 info "$tmp/double.ply" --json &&
+    check_json "double PLY is reported double" "r['double_precision'] is True"
+run "reader float PLY text" 0 info "$tmp/float.ply" && grep -q "^precision: *float" "$tmp/out" && ok ||
+    bad "agjk info on a float PLY: $(grep precision "$tmp/out")"
+# A large point set (above CLI_QUERY_HULL_MAX_POINTS: the query scans the points
+# instead of building the hull) and its hull file give the exact distance.
+python3 -c '
+import math, random, sys
+random.seed(5)
+with open(sys.argv[1], "w") as f:
+    for i in range(70000):
+        x, y, z = (random.gauss(0, 1) for _ in range(3)); n = math.sqrt(x*x + y*y + z*z)
+        f.write("v %r %r %r\n" % (x / n, y / n, z / n))
+    f.write("v 1 0 0\n")' "$tmp/big.obj"
+distance_is "large point set" 1.5 1e-12 "$tmp/big.obj" "$C" --pose-b 3 0 0 1 0 0 0
+run "large point set hull" 0 hull "$tmp/big.obj" -o "$tmp/bighull.off" && ok
+distance_is "large hull file" 1.5 1e-12 "$tmp/bighull.off" "$C" --pose-b 3 0 0 1 0 0 0
+run "large hull info" 0 info "$tmp/bighull.off" --json &&
+    check_json "large hull info" "r['vertices'] == r['hull_vertices'] and r['hill_climbing'] is True"
 
 # --- bad command lines -----------------------------------------------------------------
 expect_error "one file" distance "$C"

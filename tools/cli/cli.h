@@ -54,13 +54,18 @@ void cli_error(const char *fmt, ...);
 
 void cli_guard_start(const cli_args *args);
 
-/* A mesh file as a convex shape (hull with adjacency, scaled). */
+/* A mesh file as a convex shape (hull with adjacency, scaled). `flags`:
+ * CLI_SHAPE_ADJACENCY builds the hill-climbing adjacency of a solid hull;
+ * without CLI_SHAPE_HULL (a query), a set of more than CLI_QUERY_HULL_MAX_POINTS
+ * points gets no hull at all and its support is a scan over the points. */
+enum { CLI_SHAPE_ADJACENCY = 1, CLI_SHAPE_HULL = 2 };
+#define CLI_QUERY_HULL_MAX_POINTS 65536
 typedef struct cli_shape {
     mesh_points points;
     mesh_hull hull;
     agjk_shape shape;
 } cli_shape;
-int cli_shape_load(const char *path, double scale, int with_adjacency, cli_shape *s);
+int cli_shape_load(const char *path, double scale, int flags, cli_shape *s);
 void cli_shape_free(cli_shape *s);
 /* Whether queries on this hull find support points by hill climbing (an
  * adjacency and at least AGJK_POLYTOPE_HILL_CLIMB_MIN_VERTICES vertices) or

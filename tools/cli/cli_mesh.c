@@ -12,8 +12,8 @@ static void info_text(const char *path, const cli_shape *s) {
     printf("%-17s %zu\n", "faces:", s->points.face_count);
     printf("%-17s %zu\n", "vertices:", s->points.count);
     printf("%-17s %s\n", "precision:",
-           s->points.double_precision ? "double (re-read from the text file, as declared)"
-                                      : "float (as assimp stores it)");
+           s->points.precision_note[0] ? s->points.precision_note
+           : s->points.double_precision ? "double" : "float");
     printf("%-17s %s\n", "hull:", mesh_hull_kind(h));
     printf("%-17s %d\n", "hull_vertices:", (int)h->vertex_count);
     printf("%-17s %d\n", "hull_triangles:", (int)h->triangle_count);
@@ -53,7 +53,8 @@ int cli_cmd_info(int argc, char **argv) {
     }
     cli_guard_start(&a);
     cli_shape s;
-    if (!cli_shape_load(a.inputs[0], 1.0, 1, &s)) return CLI_EXIT_ERROR;
+    if (!cli_shape_load(a.inputs[0], 1.0, CLI_SHAPE_HULL | CLI_SHAPE_ADJACENCY, &s))
+        return CLI_EXIT_ERROR;
     if (a.json) info_json(a.inputs[0], &s);
     else info_text(a.inputs[0], &s);
     cli_shape_free(&s);
@@ -75,7 +76,7 @@ int cli_cmd_hull(int argc, char **argv) {
     }
     cli_guard_start(&a);
     cli_shape s;
-    if (!cli_shape_load(a.inputs[0], 1.0, 0, &s)) return CLI_EXIT_ERROR;
+    if (!cli_shape_load(a.inputs[0], 1.0, CLI_SHAPE_HULL, &s)) return CLI_EXIT_ERROR;
     int to_stdout = strcmp(a.output, "-") == 0;
     FILE *f = to_stdout ? stdout : fopen(a.output, "w");
     int ok = f != NULL;

@@ -17,26 +17,33 @@
 /* Room for one error message. */
 #define MESH_ERROR_SIZE 512
 
-/* The points of a mesh file: every vertex of every mesh of the scene, in the
- * scene's root frame (node transforms applied), duplicates allowed. */
+/* The points of a mesh file: every vertex record of the file (OFF, OBJ: also
+ * vertices no face uses, duplicates kept), or for the formats read by assimp
+ * every vertex of every mesh of the scene in the scene's root frame (node
+ * transforms applied; assimp may merge identical vertices). */
 typedef struct mesh_points {
     agjk_vec3 *points;
     size_t count;
     size_t mesh_count;   /* meshes merged */
     size_t face_count;   /* faces of all kinds (points, lines, polygons) */
-    /* 1: coordinates were re-read from the text in double precision (OFF, OBJ,
-     * ASCII PLY; a PLY coordinate declared float is rounded to float);
-     * 0: they are assimp's single-precision floats. */
+    /* 1: every coordinate is the double nearest to the number written in the
+     * file (OFF and OBJ by our reader, ASCII PLY whose x, y, z are declared
+     * double); 0: single precision (assimp's floats, or a PLY coordinate
+     * declared float: the float nearest to the text). */
     int double_precision;
-    char format[16];     /* file extension as assimp saw it, e.g. "off" */
+    char precision_note[64]; /* how the coordinates were read, for `agjk info` */
+    char format[16];     /* file extension, lower case, e.g. "off" */
 } mesh_points;
 
-/* Loads `path` with assimp. Returns 1 on success; 0 with a message in `err`
- * for a missing/unreadable/empty file, a format assimp cannot read, a scene
- * without vertices, or a non-finite vertex.
+/* Loads `path`. OFF and OBJ files are read by the strict reader of
+ * mesh_text.c; other formats by assimp. Returns 1 on success; 0 with a
+ * message in `err` (naming the file, and the line for OFF and OBJ) for a
+ * missing/unreadable/empty file, a malformed record, a number that is not
+ * finite or beyond AGJK_MAX_COORDINATE, a face index out of range, a format
+ * assimp cannot read, a scene without vertices, or a non-finite vertex.
  *
  * assimp itself crashes on some malformed files (found by fuzzing: OFF files
- * with extra vertex lines, PLY files with out-of-range face indices), so the
+ * with extra vertex lines, PLY files with out-of-range face indices), so its
  * import runs in a child process (mesh_isolate.c): a crash there becomes an
  * error message here. Set the environment variable AGJK_MESH_IN_PROCESS=1 to
  * load in-process instead (debuggers, coverage-guided fuzzers). */
@@ -45,23 +52,33 @@ int mesh_load(const char *path, mesh_points *out, char *err, size_t err_size);
 int mesh_load_in_process(const char *path, mesh_points *out, char *err, size_t err_size);
 void mesh_points_free(mesh_points *points);
 
-/* Re-reads the vertex coordinates of an OFF, OBJ or ASCII PLY file in double precision
- * and replaces assimp's float coordinates by them (see mesh_refine.c). Returns
- * 1 if every point was matched and replaced, 0 (points unchanged) otherwise,
- * -1 if the file holds a non-finite coordinate (index in *nonfinite_vertex). */
-int mesh_refine_double(const char *path, const char *format, mesh_points *points,
-                       long *nonfinite_vertex);
+/* The strict OFF / OBJ reader (format "off" or "obj"; see mesh_text.c).
+ * Returns 1 with every vertex of the file in `out`, in double; 0 with a
+ * message "FILE:LINE: what is wrong" in `err`. */
+int mesh_read_text(const char *path, const char *format, mesh_points *out, char *err,
+                   size_t err_size);
 
-/* assimp rejects an OFF file with no faces, yet such a file is a valid point
- * cloud: reads it directly. Returns 1 (points in `out`) if `path` is an OFF
- * file declaring 0 faces whose vertices all parse; -1 if one of them is not
- * finite (its index in *nonfinite_vertex); 0 otherwise. */
-int mesh_read_off_point_cloud(const char *path, mesh_points *out, long *nonfinite_vertex);
+/* The numbers of the text formats: [+-] digits [. digits] [(e|E) [+-] digits],
+ * converted by strtod (the double nearest to the text). Returns MESH_NUMBER_OK
+ * with *value set, or why the token is not a coordinate. */
+enum {
+    MESH_NUMBER_OK = 0,
+    MESH_NUMBER_NOT_A_NUMBER,
+    MESH_NUMBER_NOT_FINITE,  /* NaN, Inf */
+    MESH_NUMBER_OUT_OF_RANGE /* magnitude beyond AGJK_MAX_COORDINATE */
+};
+int mesh_parse_coordinate(const char *token, double *value);
+/* The message for a code of mesh_parse_coordinate(), quoting the token. */
+void mesh_coordinate_error(int code, const char *token, char *msg, size_t size);
 
-/* 0 if `path` starts with an OFF header whose vertex and face counts cannot
- * fit in `file_size` bytes (a truncated file, or a count meant to exhaust
- * memory: assimp would reserve it before reading); 1 otherwise. */
-int mesh_off_counts_plausible(const char *path, long file_size);
+/* ASCII PLY: replaces assimp's float points by every vertex record of the
+ * file, read as text (see mesh_refine.c): a coordinate declared double is the
+ * double nearest to the text, one declared float the float nearest to it;
+ * sets double_precision and precision_note accordingly. Returns 1 if done; 0
+ * (points unchanged) for another format or a layout this reader declines; -1
+ * with "FILE:LINE: what is wrong" in `err` for a malformed vertex record. */
+int mesh_refine_double(const char *path, const char *format, mesh_points *points, char *err,
+                       size_t err_size);
 
 /* Convex hull of a point set. */
 typedef struct mesh_hull {
@@ -82,6 +99,9 @@ typedef struct mesh_hull {
     /* 1: dimension 3 by our test, but Qhull found the set too thin for a
      * solid hull; the points are kept as for a degenerate set. */
     int qhull_failed;
+    /* 1: built by mesh_hull_points_only(): no hull was computed, `vertices`
+     * are all the input points (dimension is still the affine dimension). */
+    int points_only;
 } mesh_hull;
 
 /* Builds the hull of points[0..count-1] (count >= 1, all finite) with Qhull.
@@ -89,9 +109,17 @@ typedef struct mesh_hull {
  * Returns 1 on success, 0 with a message in `err`. */
 int mesh_hull_build(const agjk_vec3 *points, size_t count, int with_adjacency, mesh_hull *hull,
                     char *err, size_t err_size);
+/* The shape data without a hull: every input point is a vertex and the
+ * support is a scan (exact: the support function of a point set is that of
+ * its hull). Costs O(count), where Qhull took 6.5 to 9 microseconds of CPU
+ * per point on 1,000,000 points of a sphere: the cheaper choice for a few
+ * queries on a large set. Returns 1 on success, 0 with a message in `err`. */
+int mesh_hull_points_only(const agjk_vec3 *points, size_t count, mesh_hull *hull, char *err,
+                          size_t err_size);
 void mesh_hull_free(mesh_hull *hull);
 
-/* "solid", "flat (coplanar)", "collinear", "single point". */
+/* "solid", "flat (coplanar)", "collinear", "single point", or for
+ * mesh_hull_points_only() "not computed (...)". */
 const char *mesh_hull_kind(const mesh_hull *hull);
 
 /* Writes the hull as OFF: the solid hull's vertices and triangles, or for a

@@ -7,6 +7,7 @@
 # literally: $(OUT)/tools/mesh/libagjkmesh.a.
 
 MESH_SRCS := tools/mesh/mesh_load.c tools/mesh/mesh_isolate.c tools/mesh/mesh_refine.c \
+             tools/mesh/mesh_text.c \
              tools/mesh/mesh_hull.c
 MESH_OBJS := $(MESH_SRCS:%.c=$(OUT)/%.o)
 MESH_LIB  := $(OUT)/tools/mesh/libagjkmesh.a

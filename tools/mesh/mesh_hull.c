@@ -188,14 +188,7 @@ static int run_qhull(const agjk_vec3 *points, size_t count, mesh_hull *hull, cha
     return ok;
 }
 
-int mesh_hull_build(const agjk_vec3 *points, size_t count, int with_adjacency, mesh_hull *hull,
-                    char *err, size_t err_size) {
-    memset(hull, 0, sizeof *hull);
-    if (count < 1 || count > (size_t)AGJK_POLYTOPE_MAX_VERTICES) {
-        set_error(err, err_size, "point count %zu out of range 1..%d", count,
-                  AGJK_POLYTOPE_MAX_VERTICES);
-        return 0;
-    }
+static void bounding_box(const agjk_vec3 *points, size_t count, mesh_hull *hull) {
     hull->bbox_min = hull->bbox_max = points[0];
     for (size_t i = 1; i < count; i++) {
         const agjk_vec3 *p = &points[i];
@@ -206,6 +199,40 @@ int mesh_hull_build(const agjk_vec3 *points, size_t count, int with_adjacency, m
         hull->bbox_max.y = fmax(hull->bbox_max.y, p->y);
         hull->bbox_max.z = fmax(hull->bbox_max.z, p->z);
     }
+}
+
+int mesh_hull_points_only(const agjk_vec3 *points, size_t count, mesh_hull *hull, char *err,
+                          size_t err_size) {
+    memset(hull, 0, sizeof *hull);
+    if (count < 1 || count > (size_t)AGJK_POLYTOPE_MAX_VERTICES) {
+        set_error(err, err_size, "point count %zu out of range 1..%d", count,
+                  AGJK_POLYTOPE_MAX_VERTICES);
+        return 0;
+    }
+    bounding_box(points, count, hull);
+    hull->dimension = affine_dimension(points, count);
+    hull->vertices = malloc(count * sizeof *hull->vertices);
+    if (!hull->vertices) {
+        set_error(err, err_size, "out of memory");
+        return 0;
+    }
+    memcpy(hull->vertices, points, count * sizeof *hull->vertices);
+    hull->vertex_count = (int32_t)count;
+    hull->points_only = 1;
+    hull->polytope.vertices = hull->vertices;
+    hull->polytope.vertex_count = hull->vertex_count;
+    return 1;
+}
+
+int mesh_hull_build(const agjk_vec3 *points, size_t count, int with_adjacency, mesh_hull *hull,
+                    char *err, size_t err_size) {
+    memset(hull, 0, sizeof *hull);
+    if (count < 1 || count > (size_t)AGJK_POLYTOPE_MAX_VERTICES) {
+        set_error(err, err_size, "point count %zu out of range 1..%d", count,
+                  AGJK_POLYTOPE_MAX_VERTICES);
+        return 0;
+    }
+    bounding_box(points, count, hull);
     hull->dimension = affine_dimension(points, count);
     int ok = hull->dimension == 3 && run_qhull(points, count, hull, err, err_size);
     if (!ok && hull->dimension == 3) {
@@ -242,6 +269,7 @@ void mesh_hull_free(mesh_hull *hull) {
 }
 
 const char *mesh_hull_kind(const mesh_hull *hull) {
+    if (hull->points_only) return "not computed (support by scan over all the points)";
     if (hull->qhull_failed) return "nearly flat (Qhull found no solid hull)";
     switch (hull->dimension) {
     case 3: return "solid";

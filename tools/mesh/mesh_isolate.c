@@ -1,6 +1,8 @@
 /* SPDX-License-Identifier: MIT */
-/* Runs the mesh import in a child process, so that a crash inside assimp on a
- * malformed file is reported as an error instead of killing the caller.
+/* Runs the assimp import in a child process, so that a crash inside assimp on
+ * a malformed file is reported as an error instead of killing the caller.
+ * OFF and OBJ files are read by our own reader (mesh_text.c), in this
+ * process: it needs no such guard, and the points need no copy through a pipe.
  *
  * Fuzzing showed assimp 5.2 reading out of bounds (SIGSEGV) on OFF files with
  * more vertex lines than declared and on PLY files whose faces index missing
@@ -44,6 +46,7 @@ typedef struct wire_header {
     int32_t double_precision;
     uint64_t count, mesh_count, face_count;
     char format[16];
+    char precision_note[64];
     char err[MESH_ERROR_SIZE];
 } wire_header;
 
@@ -89,6 +92,7 @@ static void run_child(const char *path, int fd, unsigned seconds_left) {
         h.mesh_count = pts.mesh_count;
         h.face_count = pts.face_count;
         memcpy(h.format, pts.format, sizeof h.format);
+        memcpy(h.precision_note, pts.precision_note, sizeof h.precision_note);
     }
     int ok = write_all(fd, &h, sizeof h) &&
              (!h.ok || write_all(fd, pts.points, pts.count * sizeof *pts.points));
@@ -103,6 +107,7 @@ static int read_answer(int fd, mesh_points *out, char *err, size_t err_size, int
     if (!read_all(fd, &h, sizeof h)) return 0;
     h.err[sizeof h.err - 1] = '\0';
     h.format[sizeof h.format - 1] = '\0';
+    h.precision_note[sizeof h.precision_note - 1] = '\0';
     *answered = 1;
     if (!h.ok) {
         snprintf(err, err_size, "%s", h.err);
@@ -121,13 +126,26 @@ static int read_answer(int fd, mesh_points *out, char *err, size_t err_size, int
     out->face_count = (size_t)h.face_count;
     out->double_precision = h.double_precision;
     memcpy(out->format, h.format, sizeof out->format);
+    memcpy(out->precision_note, h.precision_note, sizeof out->precision_note);
     return 1;
+}
+
+/* 1 for the formats of our own reader (by extension, as mesh_load_in_process). */
+static int own_reader(const char *path) {
+    const char *slash = strrchr(path, '/');
+    const char *dot = strrchr(slash ? slash : path, '.');
+    if (!dot || strlen(dot) != 4) return 0;
+    char ext[4];
+    for (int i = 0; i < 3; i++) ext[i] = (char)(dot[1 + i] | 0x20);
+    ext[3] = '\0';
+    return strcmp(ext, "off") == 0 || strcmp(ext, "obj") == 0;
 }
 
 int mesh_load(const char *path, mesh_points *out, char *err, size_t err_size) {
     const char *in_process = getenv("AGJK_MESH_IN_PROCESS");
     int fds[2];
-    if ((in_process && *in_process && strcmp(in_process, "0") != 0) || pipe(fds) != 0)
+    if (own_reader(path) || (in_process && *in_process && strcmp(in_process, "0") != 0) ||
+        pipe(fds) != 0)
         return mesh_load_in_process(path, out, err, err_size);
     unsigned left = alarm(0); /* read the parent's remaining time... */
     if (left) alarm(left);    /* ...and keep it running */

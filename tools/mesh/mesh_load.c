@@ -1,9 +1,10 @@
 /* SPDX-License-Identifier: MIT */
-/* Mesh loading through assimp's C API.
+/* Mesh loading: OFF and OBJ by our strict reader (mesh_text.c), every other
+ * format through assimp's C API.
  *
- * We keep only positions: a convex shape is the hull of every vertex of every
- * mesh in the scene, each mapped to the root frame by the product of the node
- * transforms above it (computed in double). Faces, normals and materials are
+ * From assimp we keep only positions: a convex shape is the hull of every
+ * vertex of every mesh in the scene, each mapped to the root frame by the
+ * product of the node transforms above it (computed in double). Faces, normals and materials are
  * ignored, so point clouds and line-only files load too.
  *
  * assimp is a large C++ parser fed untrusted files, so we check what we can
@@ -115,19 +116,6 @@ static int walk_node(walk *w, const struct aiNode *node, const xform *parent, in
     return 1;
 }
 
-/* OBJ and OFF are text: a NUL byte in the first 64 KiB means binary garbage or
- * a wide encoding, which assimp would misread as an empty scene. */
-static int has_nul_byte(const char *path) {
-    enum { HEAD = 65536 };
-    unsigned char *buf = malloc(HEAD);
-    FILE *f = fopen(path, "rb");
-    size_t n = (f && buf) ? fread(buf, 1, HEAD, f) : 0;
-    if (f) fclose(f);
-    int found = buf && memchr(buf, 0, n) != NULL;
-    free(buf);
-    return found;
-}
-
 /* assimp 5.2 loops forever on a PLY whose header never ends: require the
  * end_header line within the first 64 KiB (real headers take a few hundred
  * bytes), as a line of its own. */
@@ -184,19 +172,9 @@ static int precheck_file(const char *path, const char *format, char *err, size_t
         set_error(err, err_size, "%s: empty file", path);
         return 0;
     }
-    if ((strcmp(format, "obj") == 0 || strcmp(format, "off") == 0) && has_nul_byte(path)) {
-        set_error(err, err_size, "%s: NUL bytes in a text %s file: binary data, or a UTF-16 "
-                  "or UTF-32 encoding (save it as UTF-8 or ASCII)", path, format);
-        return 0;
-    }
     if (strcmp(format, "ply") == 0 && !ply_header_ends(path)) {
         set_error(err, err_size, "%s: PLY header without end_header (truncated or malformed)",
                   path);
-        return 0;
-    }
-    if (strcmp(format, "off") == 0 && !mesh_off_counts_plausible(path, (long)st.st_size)) {
-        set_error(err, err_size, "%s: OFF header declares more vertices or faces than the "
-                  "file holds (truncated or malformed)", path);
         return 0;
     }
     return 1;
@@ -217,7 +195,8 @@ static int check_finite(const char *path, const mesh_points *p, char *err, size_
     for (size_t i = 0; i < p->count; i++) {
         const agjk_vec3 *v = &p->points[i];
         if (!isfinite(v->x) || !isfinite(v->y) || !isfinite(v->z)) {
-            set_error(err, err_size, "%s: vertex %zu is not finite (NaN or Inf)", path, i);
+            set_error(err, err_size, "%s: vertex %zu is not finite as assimp reads it (NaN, Inf, "
+                      "or beyond the single-precision range 3.4e38)", path, i);
             return 0;
         }
     }
@@ -251,55 +230,19 @@ static int collect_scene(const char *path, const struct aiScene *scene, mesh_poi
     return 1;
 }
 
-/* A UTF-8 byte order mark (common from Windows editors) makes assimp's OBJ and
- * OFF parsers misread the first line, so for those formats we strip it and
- * import from memory (single-file formats: nothing else to resolve). */
-static const struct aiScene *import_scene(const char *path, const char *format) {
-    const unsigned flags = aiProcess_JoinIdenticalVertices;
-    unsigned char head[3] = {0, 0, 0};
-    FILE *f = fopen(path, "rb");
-    size_t got = f ? fread(head, 1, 3, f) : 0;
-    int bom = got == 3 && head[0] == 0xEF && head[1] == 0xBB && head[2] == 0xBF;
-    if (!bom || (strcmp(format, "obj") != 0 && strcmp(format, "off") != 0)) {
-        if (f) fclose(f);
-        return aiImportFile(path, flags);
-    }
-    /* Read the rest of the file. */
-    size_t cap = 1 << 16, len = 0;
-    char *buf = malloc(cap);
-    while (buf) {
-        len += fread(buf + len, 1, cap - len, f);
-        if (len < cap) break;
-        char *bigger = realloc(buf, cap *= 2);
-        if (!bigger) {
-            free(buf);
-            buf = NULL;
-        }
-        buf = bigger;
-    }
-    fclose(f);
-    if (!buf) return NULL;
-    const struct aiScene *scene = aiImportFileFromMemory(buf, (unsigned)len, flags, format);
-    free(buf);
-    return scene;
-}
-
 int mesh_load_in_process(const char *path, mesh_points *out, char *err, size_t err_size) {
     memset(out, 0, sizeof *out);
     file_extension(path, out->format, sizeof out->format);
     if (!precheck_file(path, out->format, err, err_size)) return 0;
+    if (strcmp(out->format, "off") == 0 || strcmp(out->format, "obj") == 0) {
+        if (!mesh_read_text(path, out->format, out, err, err_size)) return 0;
+        snprintf(out->precision_note, sizeof out->precision_note, "%s",
+                 "double (every coordinate read from the text by strtod)");
+        return 1;
+    }
     /* JoinIdenticalVertices only shrinks the set; no triangulation or other
      * processing (it could drop point and line primitives). */
-    const struct aiScene *scene = import_scene(path, out->format);
-    long bad = -1;
-    if (!scene && strcmp(out->format, "off") == 0) {
-        int cloud = mesh_read_off_point_cloud(path, out, &bad);
-        if (cloud > 0) return 1;
-        if (cloud < 0) {
-            set_error(err, err_size, "%s: vertex %ld is not finite (NaN or Inf)", path, bad);
-            return 0;
-        }
-    }
+    const struct aiScene *scene = aiImportFile(path, aiProcess_JoinIdenticalVertices);
     if (!scene) {
         char why[160];
         clean_message(aiGetErrorString(), why, sizeof why);
@@ -312,12 +255,12 @@ int mesh_load_in_process(const char *path, mesh_points *out, char *err, size_t e
     if (!ok) set_error(err, err_size, "%s: no meshes in file (empty mesh)", path);
     if (ok) ok = collect_scene(path, scene, out, &all_identity, err, err_size);
     aiReleaseImport(scene);
-    /* Re-read OFF/OBJ coordinates in double (assimp stores floats). Only when
-     * no transform moved the points, so file values map one-to-one. */
-    if (ok && all_identity && mesh_refine_double(path, out->format, out, &bad) < 0) {
-        set_error(err, err_size, "%s: vertex %ld is not finite (NaN or Inf)", path, bad);
+    snprintf(out->precision_note, sizeof out->precision_note, "%s",
+             "float (as assimp stores it)");
+    /* ASCII PLY: the vertex records as text, in double (assimp stores
+     * floats). Only when no transform moved the points (PLY has none). */
+    if (ok && all_identity && mesh_refine_double(path, out->format, out, err, err_size) < 0)
         ok = 0;
-    }
     if (ok) ok = check_finite(path, out, err, err_size);
     if (!ok) mesh_points_free(out);
     return ok;

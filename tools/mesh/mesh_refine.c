@@ -1,320 +1,153 @@
 /* SPDX-License-Identifier: MIT */
-/* Double-precision coordinates for OFF, OBJ and ASCII PLY files.
+/* ASCII PLY vertices read as text.
  *
- * assimp (as packaged) stores positions as float: a coordinate of 100 loses
- * about 4e-6, which for parts 0.01 apart is a 4e-4 relative distance error
- * that no solver tolerance can recover. OFF, OBJ and ASCII PLY are text, so we
- * re-read their vertex records with strtod (correctly rounded) and put the
- * doubles back in place of assimp's floats.
- *
- * assimp stays the authority on what the file means (which vertices, which
- * meshes, whether it parses at all); we only upgrade precision: each float
- * point of assimp is looked up among the file's vertices rounded to float
- * (exactly, or within one float ulp per coordinate, since assimp's fast_atof
- * is not always correctly rounded). If any point finds no match, or the
- * file's layout is beyond this small reader, nothing is changed.
- * Several file vertices may round to the same float point: all of them are
- * kept, so the point set is a superset of assimp's, never missing a vertex. */
+ * assimp (as packaged) stores positions as float, and its fast number parser
+ * is not always right (a 21-digit integer becomes 0, a 4,100-digit number a
+ * value that is not in the file). ASCII PLY is text, so after assimp has
+ * accepted the file (it stays the judge of faces and of the header's other
+ * elements) we read the vertex element ourselves and the points become every
+ * vertex record of the file, converted by mesh_parse_coordinate() (strict
+ * syntax, strtod). A coordinate the header declares `float` is rounded to
+ * float: the file says that is its precision, and the precision report says
+ * so. Elements before the vertices (rare) take one line per item, as ASCII
+ * PLY writes them. A vertex element with a list property, or a binary file,
+ * is declined: assimp's floats are then kept, and reported as such. */
 #include "mesh.h"
 
 #include <math.h>
+#include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
 
-/* A file vertex: its double coordinates and their float rounding. */
-typedef struct fvert {
-    float key[3];
-    agjk_vec3 p;
-} fvert;
+typedef struct ply_reader {
+    const char *path;
+    FILE *f;
+    char *line;
+    size_t line_size;
+    long line_no;
+    char *err;
+    size_t err_size;
+} ply_reader;
 
-typedef struct fvert_list {
-    fvert *v;
-    size_t count, capacity;
-    long nonfinite; /* index of the first non-finite vertex, or -1 */
-} fvert_list;
-
-static int list_push(fvert_list *l, const double c[3]) {
-    if (l->count == l->capacity) {
-        size_t cap = l->capacity ? 2 * l->capacity : 1024;
-        fvert *n = realloc(l->v, cap * sizeof *n);
-        if (!n) return 0;
-        l->v = n;
-        l->capacity = cap;
-    }
-    if ((!isfinite(c[0]) || !isfinite(c[1]) || !isfinite(c[2])) && l->nonfinite < 0)
-        l->nonfinite = (long)l->count;
-    fvert *f = &l->v[l->count++];
-    f->p.x = c[0];
-    f->p.y = c[1];
-    f->p.z = c[2];
-    for (int k = 0; k < 3; k++) f->key[k] = (float)c[k];
+static int next(ply_reader *r) {
+    if (getline(&r->line, &r->line_size, r->f) < 0) return 0;
+    r->line_no++;
     return 1;
 }
 
-/* Reads up to three numbers from `s`; returns how many were read. */
-static int read3(const char *s, double c[3]) {
-    int n = 0;
-    char *end;
-    while (n < 3) {
-        double v = strtod(s, &end);
-        if (end == s) break;
-        c[n++] = v;
-        s = end;
+static int fail(ply_reader *r, const char *fmt, ...) {
+    va_list ap;
+    int n = snprintf(r->err, r->err_size, "%s:%ld: ", r->path, r->line_no);
+    if (n >= 0 && (size_t)n < r->err_size) {
+        va_start(ap, fmt);
+        vsnprintf(r->err + n, r->err_size - (size_t)n, fmt, ap);
+        va_end(ap);
     }
-    return n;
+    return -1;
 }
 
-/* Skips blanks (and a UTF-8 byte order mark); returns NULL for an empty or
- * comment-only line. */
-static const char *content(const char *line) {
-    if ((unsigned char)line[0] == 0xEF && (unsigned char)line[1] == 0xBB &&
-        (unsigned char)line[2] == 0xBF)
-        line += 3;
-    while (*line == ' ' || *line == '\t' || *line == '\r') line++;
-    return (*line == '\0' || *line == '\n' || *line == '#') ? NULL : line;
-}
+/* The header's vertex element: how many lines precede it, its count, its
+ * scalar properties and where x, y, z are among them. */
+typedef struct ply_layout {
+    long skip_lines, count;
+    int nprop, axis_prop[3], axis_float[3];
+} ply_layout;
 
-/* OBJ: every "v x y z [w | r g b]" line, in order. A lone CR ends a line
- * too (old Mac files; assimp reads them so). */
-static int read_obj(FILE *f, fvert_list *l) {
-    char line[4096];
-    while (fgets(line, sizeof line, f)) {
-        if (!strchr(line, '\n') && !feof(f)) return 0; /* over-long line: give up */
-        for (char *seg = line, *next; seg; seg = next) {
-            next = strchr(seg, '\r');
-            if (next) *next++ = '\0';
-            const char *s = content(seg);
-            if (!s || s[0] != 'v' || (s[1] != ' ' && s[1] != '\t')) continue;
-            double c[3];
-            if (read3(s + 1, c) != 3 || !list_push(l, c)) return 0;
-        }
-    }
-    return 1;
-}
-
-/* ASCII PLY: the vertex element's x, y, z properties, one vertex per line.
- * A coordinate declared `float` is rounded to float (the file says that is
- * its precision, and readers that honour the header agree); `double` keeps
- * the double. Elements before the vertices (rare) take one line per item.
- * Binary PLY stores binary floats or doubles, which assimp keeps exactly for
- * floats; we decline it (and a property list before x, y, z). */
-static int read_ply(FILE *f, fvert_list *l) {
-    char line[4096];
-    long skip_lines = 0, count = -1;
-    int in_vertex = 0, nprop = 0, axis_prop[3] = {-1, -1, -1}, axis_float[3] = {0, 0, 0};
-    int ascii = 0;
-    while (fgets(line, sizeof line, f)) {
+/* 1: an ASCII PLY header this reader handles; 0: decline. */
+static int read_header(ply_reader *r, ply_layout *h) {
+    int in_vertex = 0, ascii = 0, ended = 0;
+    memset(h, 0, sizeof *h);
+    h->count = -1;
+    for (int k = 0; k < 3; k++) h->axis_prop[k] = -1;
+    while (!ended && next(r)) {
         char a[64] = "", b[64] = "", c[64] = "";
-        int n = sscanf(line, "%63s %63s %63s", a, b, c);
-        if (n >= 1 && strcmp(a, "end_header") == 0) break;
+        int n = sscanf(r->line, "%63s %63s %63s", a, b, c);
+        if (n >= 1 && strcmp(a, "end_header") == 0) ended = 1;
         if (n >= 2 && strcmp(a, "format") == 0) ascii = strcmp(b, "ascii") == 0;
         if (n >= 3 && strcmp(a, "element") == 0) {
-            if (count >= 0) in_vertex = 0; /* vertices done: later elements do not matter */
+            long items = strtol(c, NULL, 10);
+            if (h->count >= 0) in_vertex = 0; /* vertices done: later elements do not matter */
             else if (strcmp(b, "vertex") == 0) {
                 in_vertex = 1;
-                count = strtol(c, NULL, 10);
+                h->count = items;
             } else {
-                skip_lines += strtol(c, NULL, 10);
+                h->skip_lines += items;
             }
         }
         if (n >= 3 && strcmp(a, "property") == 0 && in_vertex) {
             if (strcmp(b, "list") == 0) return 0;
             for (int k = 0; k < 3; k++)
                 if (strcmp(c, (const char *[]){"x", "y", "z"}[k]) == 0) {
-                    axis_prop[k] = nprop;
-                    axis_float[k] = strcmp(b, "float") == 0 || strcmp(b, "float32") == 0;
+                    h->axis_prop[k] = h->nprop;
+                    h->axis_float[k] = strcmp(b, "float") == 0 || strcmp(b, "float32") == 0;
                 }
-            nprop++;
+            h->nprop++;
         }
     }
-    if (!ascii || count < 0 || count > 1000000000L || skip_lines < 0 || axis_prop[0] < 0 ||
-        axis_prop[1] < 0 || axis_prop[2] < 0)
-        return 0;
-    for (long i = 0; i < skip_lines; i++)
-        if (!fgets(line, sizeof line, f)) return 0;
-    while ((long)l->count < count && fgets(line, sizeof line, f)) {
-        double v[64], c3[3];
+    return ended && ascii && h->count >= 0 && h->count <= 1000000000L && h->skip_lines >= 0 &&
+           h->axis_prop[0] >= 0 && h->axis_prop[1] >= 0 && h->axis_prop[2] >= 0;
+}
+
+/* Reads the vertex records into pts[0..h->count-1]; 1, or -1 with a message. */
+static int read_vertices(ply_reader *r, const ply_layout *h, agjk_vec3 *pts) {
+    for (long i = 0; i < h->skip_lines; i++)
+        if (!next(r)) return fail(r, "the file ends before the vertex element");
+    for (long i = 0; i < h->count; i++) {
+        if (!next(r)) return fail(r, "the file ends after %ld of its %ld vertices", i, h->count);
+        double c[3] = {0, 0, 0};
         int n = 0;
-        const char *s = line;
-        char *end;
-        while (n < nprop && n < 64) {
-            v[n] = strtod(s, &end);
-            if (end == s) break;
-            s = end;
-            n++;
+        char *save = NULL;
+        for (char *t = strtok_r(r->line, " \t\r\n", &save); t && n < h->nprop;
+             t = strtok_r(NULL, " \t\r\n", &save), n++) {
+            for (int k = 0; k < 3; k++) {
+                if (h->axis_prop[k] != n) continue;
+                int code = mesh_parse_coordinate(t, &c[k]);
+                if (code != MESH_NUMBER_OK) {
+                    char msg[160];
+                    mesh_coordinate_error(code, t, msg, sizeof msg);
+                    return fail(r, "vertex %ld: %s", i, msg);
+                }
+                if (h->axis_float[k]) {
+                    float v = (float)c[k];
+                    if (!isfinite(v))
+                        return fail(r, "vertex %ld: coordinate '%.24s' is out of range for "
+                                    "the float the header declares (limit 3.4e38)", i, t);
+                    c[k] = v;
+                }
+            }
         }
-        if (n < nprop && n < 64) return 0;
-        for (int k = 0; k < 3; k++) {
-            if (axis_prop[k] >= 64) return 0;
-            c3[k] = axis_float[k] ? (double)(float)v[axis_prop[k]] : v[axis_prop[k]];
-        }
-        if (!list_push(l, c3)) return 0;
+        if (n < h->nprop)
+            return fail(r, "vertex %ld has %d values; the header declares %d properties", i, n,
+                        h->nprop);
+        pts[i].x = c[0];
+        pts[i].y = c[1];
+        pts[i].z = c[2];
     }
-    return (long)l->count == count;
-}
-
-/* OFF header: "[ST][C][N]OFF" keyword, then the counts on the same line or
- * the next content line. Returns the number of counts read (0: not OFF). */
-static int read_off_header(FILE *f, double counts[3]) {
-    char line[4096];
-    const char *s = NULL;
-    while (fgets(line, sizeof line, f) && !(s = content(line))) {}
-    if (!s) return 0;
-    size_t klen = strspn(s, "STCNOF");
-    if (klen < 3 || strncmp(s + klen - 3, "OFF", 3) != 0) return 0;
-    int n = read3(s + klen, counts);
-    while (n == 0 && fgets(line, sizeof line, f)) {
-        s = content(line);
-        if (s) n = read3(s, counts);
-    }
-    return n;
-}
-
-/* OFF: header, then one vertex per line, x y z first. Other variants (4OFF,
- * nOFF) are declined. */
-static int read_off(FILE *f, fvert_list *l, double *face_count) {
-    char line[4096];
-    const char *s;
-    double counts[3] = {0, 0, 0};
-    if (read_off_header(f, counts) < 1 || !(counts[0] >= 0 && counts[0] <= 1e9)) return 0;
-    *face_count = counts[1];
-    size_t nv = (size_t)counts[0];
-    while (l->count < nv && fgets(line, sizeof line, f)) {
-        if (!(s = content(line))) continue;
-        double c[3];
-        if (read3(s, c) != 3 || !list_push(l, c)) return 0;
-    }
-    return l->count == nv;
-}
-
-int mesh_off_counts_plausible(const char *path, long file_size) {
-    FILE *f = fopen(path, "r");
-    if (!f) return 1;
-    double counts[3] = {0, 0, 0};
-    int n = read_off_header(f, counts);
-    fclose(f);
-    if (n < 1) return 1; /* not an OFF header we know: assimp will judge */
-    /* A vertex record takes at least 6 bytes ("0 0 0\n"), a face 2 ("0\n"). */
-    double need = 6.0 * counts[0] + (n >= 2 ? 2.0 * counts[1] : 0.0);
-    return counts[0] >= 0 && (n < 2 || counts[1] >= 0) && need <= (double)file_size;
-}
-
-/* Order of float triples, exact (total for finite keys). */
-static int key_cmp(const float a[3], const float b[3]) {
-    for (int k = 0; k < 3; k++) {
-        if (a[k] < b[k]) return -1;
-        if (a[k] > b[k]) return 1;
-    }
-    return 0;
-}
-
-static int fvert_cmp(const void *a, const void *b) {
-    return key_cmp(((const fvert *)a)->key, ((const fvert *)b)->key);
-}
-
-/* First index of `key` in the sorted list, or -1. */
-static long find_key(const fvert_list *l, const float key[3]) {
-    size_t lo = 0, hi = l->count;
-    while (lo < hi) {
-        size_t mid = lo + (hi - lo) / 2;
-        if (key_cmp(l->v[mid].key, key) < 0) lo = mid + 1;
-        else hi = mid;
-    }
-    return (lo < l->count && key_cmp(l->v[lo].key, key) == 0) ? (long)lo : -1;
-}
-
-/* Exact match first, then the 26 neighbours one float ulp away. */
-static long find_near(const fvert_list *l, const agjk_vec3 *p) {
-    const float base[3] = {(float)p->x, (float)p->y, (float)p->z};
-    long hit = find_key(l, base);
-    for (int m = 0; hit < 0 && m < 27; m++) {
-        float key[3];
-        int step[3] = {m % 3 - 1, (m / 3) % 3 - 1, m / 9 - 1};
-        for (int k = 0; k < 3; k++)
-            key[k] = step[k] == 0 ? base[k]
-                                  : nextafterf(base[k], step[k] > 0 ? INFINITY : -INFINITY);
-        hit = find_key(l, key);
-    }
-    return hit;
-}
-
-/* Replaces every point by its double-precision file vertex (or vertices). */
-static int substitute(const fvert_list *l, mesh_points *points) {
-    unsigned char *used = calloc(l->count ? l->count : 1, 1);
-    agjk_vec3 *out = malloc((l->count ? l->count : 1) * sizeof *out);
-    size_t n = 0;
-    int ok = used && out;
-    for (size_t i = 0; ok && i < points->count; i++) {
-        long h = find_near(l, &points->points[i]);
-        if (h < 0) ok = 0;
-        /* Take the whole run of file vertices with this float key once. */
-        for (size_t j = (size_t)h; ok && j < l->count && !used[j] &&
-                                   key_cmp(l->v[j].key, l->v[h].key) == 0; j++) {
-            used[j] = 1;
-            out[n++] = l->v[j].p;
-        }
-    }
-    free(used);
-    if (!ok) {
-        free(out);
-        return 0;
-    }
-    free(points->points);
-    points->points = out;
-    points->count = n;
     return 1;
 }
 
-int mesh_refine_double(const char *path, const char *format, mesh_points *points,
-                       long *nonfinite_vertex) {
-    int is_obj = strcmp(format, "obj") == 0, is_off = strcmp(format, "off") == 0;
-    int is_ply = strcmp(format, "ply") == 0;
-    *nonfinite_vertex = -1;
-    if (!is_obj && !is_off && !is_ply) return 0;
-    FILE *f = fopen(path, "r");
-    if (!f) return 0;
-    fvert_list l = {NULL, 0, 0, -1};
-    double faces;
-    int ok = is_obj ? read_obj(f, &l) : is_off ? read_off(f, &l, &faces) : read_ply(f, &l);
-    fclose(f);
-    if (l.nonfinite >= 0) {
-        *nonfinite_vertex = l.nonfinite;
-        ok = -1;
-    } else if (ok && l.count > 0) { /* no vertex read: nothing to match (and no qsort(NULL)) */
-        qsort(l.v, l.count, sizeof *l.v, fvert_cmp);
-        ok = substitute(&l, points);
-        points->double_precision = ok;
-    } else {
-        ok = 0;
+int mesh_refine_double(const char *path, const char *format, mesh_points *points, char *err,
+                       size_t err_size) {
+    if (strcmp(format, "ply") != 0) return 0;
+    ply_reader r = {path, fopen(path, "r"), NULL, 0, 0, err, err_size};
+    if (!r.f) return 0;
+    ply_layout h;
+    int ok = read_header(&r, &h) && h.count > 0;
+    agjk_vec3 *pts = ok ? malloc((size_t)h.count * sizeof *pts) : NULL;
+    if (ok) ok = pts ? read_vertices(&r, &h, pts) : 0;
+    free(r.line);
+    fclose(r.f);
+    if (ok != 1) {
+        free(pts);
+        return ok;
     }
-    free(l.v);
-    return ok;
-}
-
-int mesh_read_off_point_cloud(const char *path, mesh_points *out, long *nonfinite_vertex) {
-    FILE *f = fopen(path, "r");
-    if (!f) return 0;
-    fvert_list l = {NULL, 0, 0, -1};
-    double faces = -1;
-    int ok = read_off(f, &l, &faces) && faces == 0 && l.count > 0;
-    /* Nothing but blanks and comments may follow the vertices. */
-    char line[4096];
-    while (ok && fgets(line, sizeof line, f))
-        if (content(line)) ok = 0;
-    fclose(f);
-    *nonfinite_vertex = l.nonfinite;
-    if (ok && l.nonfinite >= 0) ok = -1;
-    if (ok == 1) {
-        out->points = malloc(l.count * sizeof *out->points);
-        if (!out->points) ok = 0;
-        for (size_t i = 0; ok && i < l.count; i++) out->points[i] = l.v[i].p;
-        if (ok) {
-            out->count = l.count;
-            out->mesh_count = 1;
-            out->face_count = 0;
-            out->double_precision = 1;
-        }
-    }
-    free(l.v);
-    return ok;
+    int declared_float = h.axis_float[0] || h.axis_float[1] || h.axis_float[2];
+    free(points->points);
+    points->points = pts;
+    points->count = (size_t)h.count;
+    points->double_precision = !declared_float;
+    snprintf(points->precision_note, sizeof points->precision_note, "%s",
+             declared_float ? "float (the PLY header declares float coordinates)"
+                            : "double (read from the text, declared double)");
+    return 1;
 }
