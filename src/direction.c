@@ -3,12 +3,93 @@
  *
  * We minimise f(x) = ||x||^2 and only the direction of the gradient matters to
  * the support function (paper eq. 9), so we use grad f(y)/2 = y, as the
- * reference implementation does (Coal); d_{-1} = s_{-1} = x_0. */
+ * reference implementation does (Coal); d_{-1} = s_{-1} = x_0.
+ *
+ * The adaptive method (AGJK_METHOD_ADAPTIVE) chains these policies by what the
+ * supports reveal, measured on the benchmark (README, "The adaptive method"):
+ *
+ *   1. Polyak phase: heavy-ball directions (GJK++), best while the shapes are
+ *      far apart relative to their size (plain GJK converges fast there and
+ *      Nesterov's momentum only delays it).
+ *   2. Nesterov phase (Alg. 6): entered at the end of the first iteration whose
+ *      best support plane is below 0.9 ||x_k|| (a relative gap of 10% or more:
+ *      close or overlapping shapes, where momentum pays).
+ *   3. Plain GJK to the end: after the Alg. 6 fallback, or as soon as a
+ *      momentum support gives a worse lower bound <d_k, s_k> / ||d_k|| than the
+ *      best so far (the momentum overshoots: adaptive restart in the sense of
+ *      O'Donoghue and Candes, "Adaptive restart for accelerated gradient
+ *      schemes", 2015, here restarting to the gradient direction for good).
+ *
+ * Every support s found in a direction d gives the plane <d, .> >= <d, s> that
+ * bounds D, hence ||x*|| >= <d, s> / ||d||, whatever d was (momentum or not).
+ * The solver stops as soon as the best such plane certifies x_k; this removes
+ * the extra support in direction x_k that Alg. 6 pays to get a duality gap. */
 #include "solver.h"
+
+/* A momentum phase switches to Nesterov once the best plane is below this
+ * fraction of ||x_k|| (measured: 0.8 ... 0.97 give the same means to +-0.2). */
+#define ADAPTIVE_CLOSE_RATIO 0.9
 
 int agjk__method_has_momentum(agjk_method method) {
     return method == AGJK_METHOD_NESTEROV || method == AGJK_METHOD_NESTEROV_NORMALIZED ||
-           method == AGJK_METHOD_POLYAK;
+           method == AGJK_METHOD_POLYAK || method == AGJK_METHOD_ADAPTIVE;
+}
+
+void agjk__momentum_init(agjk__momentum *m, agjk_method method, agjk_vec3 x0) {
+    m->method = method;
+    m->active = agjk__method_has_momentum(method);
+    m->d_prev = x0;
+    m->s_prev = x0;
+    m->phase = method == AGJK_METHOD_ADAPTIVE ? AGJK__PHASE_POLYAK : AGJK__PHASE_FIXED;
+    m->plane = -INFINITY;
+    m->plane_before = -INFINITY;
+    m->omega = -INFINITY;
+    m->x_k = x0;
+    m->d_best = x0;
+}
+
+void agjk__momentum_rescale(agjk__momentum *m, double f) {
+    m->d_prev = v3_scale(m->d_prev, f);
+    m->s_prev = v3_scale(m->s_prev, f);
+    m->x_k = v3_scale(m->x_k, f);
+    m->plane *= f;
+    m->plane_before *= f;
+    m->omega *= f;
+}
+
+void agjk__momentum_plane(agjk__momentum *m, agjk_vec3 d, agjk_vec3 s, agjk_vec3 x) {
+    double dn = v3_norm(d);
+    m->omega = dn > 0.0 ? v3_dot(d, s) / dn : -INFINITY;
+    m->plane_before = m->plane;
+    if (m->omega > m->plane) {
+        m->plane = m->omega;
+        m->d_best = d;
+    }
+    m->x_k = x;
+}
+
+double agjk__momentum_plane_gap(const agjk__momentum *m, agjk_vec3 x) {
+    if (!(m->plane > -INFINITY)) return INFINITY;
+    double n = v3_norm(x);
+    return 2.0 * n * (n - m->plane);
+}
+
+int agjk__momentum_update(agjk__momentum *m, int k, agjk_vec3 d, agjk_vec3 s) {
+    int stopped = 0;
+    if (m->method == AGJK_METHOD_ADAPTIVE && k > 0 && m->phase != AGJK__PHASE_FINAL) {
+        if (!m->active) {
+            m->phase = AGJK__PHASE_FINAL; /* the solver's Alg. 6 fallback */
+        } else if (m->phase == AGJK__PHASE_POLYAK) {
+            if (m->plane < ADAPTIVE_CLOSE_RATIO * v3_norm(m->x_k)) m->phase = AGJK__PHASE_NESTEROV;
+        } else if (m->omega < m->plane_before) {
+            m->phase = AGJK__PHASE_FINAL; /* restart: plain GJK directions */
+            m->active = 0;
+            stopped = 1;
+        }
+    }
+    m->d_prev = d;
+    m->s_prev = s;
+    return stopped;
 }
 
 agjk_vec3 agjk__momentum_direction(const agjk__momentum *m, int k, agjk_vec3 x) {
@@ -43,6 +124,16 @@ agjk_vec3 agjk__momentum_direction(const agjk__momentum *m, int k, agjk_vec3 x) 
         d = v3_lerp2(m->d_prev, delta, x, 1.0 - delta);
         break;
     }
+    case AGJK_METHOD_ADAPTIVE:
+        if (m->phase == AGJK__PHASE_POLYAK) {
+            double delta = 1.0 / (kk + 1.0); /* as AGJK_METHOD_POLYAK */
+            d = v3_lerp2(m->d_prev, delta, x, 1.0 - delta);
+        } else {
+            double delta = (kk + 1.0) / (kk + 3.0); /* as AGJK_METHOD_NESTEROV */
+            agjk_vec3 y = v3_lerp2(x, delta, m->s_prev, 1.0 - delta);
+            d = v3_lerp2(m->d_prev, delta, y, 1.0 - delta);
+        }
+        break;
     default:
         d = x;
         break;

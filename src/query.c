@@ -23,7 +23,7 @@ static int read_options(const agjk_options *given, agjk_options *opts) {
     opts->struct_size = (uint32_t)sizeof *opts;
     switch (opts->method) {
     case AGJK_METHOD_GJK: case AGJK_METHOD_NESTEROV: case AGJK_METHOD_NESTEROV_NORMALIZED:
-    case AGJK_METHOD_POLYAK: case AGJK_METHOD_FRANK_WOLFE: break;
+    case AGJK_METHOD_POLYAK: case AGJK_METHOD_FRANK_WOLFE: case AGJK_METHOD_ADAPTIVE: break;
     default: return 0;
     }
     if (opts->tolerance_mode != AGJK_TOLERANCE_ABSOLUTE &&
@@ -135,7 +135,10 @@ static agjk_status run(const agjk_shape *a, const agjk_pose *pose_a, const agjk_
     else
         status = AGJK_STATUS_NOT_CONVERGED;
     result->gap = gap * inv * inv; /* a rounding-level negative gap is reported as 0 */
-    result->normal = m3_mul(&pose_a->rotation[0][0], n_local);
+    /* The normal is that of the plane that certified the lower bound: -x, or
+     * the support direction the adaptive method stopped on (solver.c). */
+    agjk_vec3 n_plane = v3_maxabs(out.direction) > 0.0 ? v3_normalize(v3_neg(out.direction)) : n_local;
+    result->normal = m3_mul(&pose_a->rotation[0][0], n_plane);
     if (!boolean_mode) {
         double distance = core - md.margin;
         double low = lower - md.margin;

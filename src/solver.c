@@ -70,8 +70,7 @@ static void follow_rescale(agjk__minkowski *md, agjk__vertex *simplex, int count
     }
     *x = v3_scale(*x, f);
     *d = v3_scale(*d, f);
-    m->d_prev = v3_scale(m->d_prev, f);
-    m->s_prev = v3_scale(m->s_prev, f);
+    agjk__momentum_rescale(m, f);
 }
 
 /* Checks a fresh support s in direction d: a bad callback output ends the
@@ -149,10 +148,7 @@ void agjk__solve(agjk__minkowski *md, const agjk__solve_input *in, agjk__solve_o
     agjk_vec3 x = in->x0;
     int have_x = 0; /* x is a point of D (after the first projection) */
     agjk__momentum m;
-    m.method = in->method;
-    m.active = agjk__method_has_momentum(in->method);
-    m.d_prev = x;
-    m.s_prev = x;
+    agjk__momentum_init(&m, in->method, x);
 
     out->outcome = AGJK__ITERATION_CAP;
     out->gap = INFINITY;
@@ -201,6 +197,8 @@ void agjk__solve(agjk__minkowski *md, const agjk__solve_input *in, agjk__solve_o
             follow_rescale(md, simplex, count, &x, &m, &d);
         }
         if (support_ends_query(md, in, d, &s, out)) break;
+        /* Adaptive method: every support plane is a lower bound (direction.c). */
+        if (m.method == AGJK_METHOD_ADAPTIVE) agjk__momentum_plane(&m, d, s.w, x);
         if (have_x) {
             double x2 = v3_norm2(x);
             double requested = requested_tolerance(in, md, x2);
@@ -211,6 +209,23 @@ void agjk__solve(agjk__minkowski *md, const agjk__solve_input *in, agjk__solve_o
              * tolerance shrinks with the distance and never fires on
              * overlapping shapes, so momentum would creep on for ever: for
              * this test use it as an absolute one at the problem's own scale. */
+            /* Adaptive method: the best support plane met so far, in whatever
+             * direction, certifies x as well as the gap does (no extra support
+             * in direction x_k once momentum has done its work). */
+            if (m.method == AGJK_METHOD_ADAPTIVE) {
+                double gp = agjk__momentum_plane_gap(&m, x);
+                if (gp < -4.0 * sqrt(x2) * noise_scale(md)) {
+                    out->outcome = AGJK__BAD_SUPPORT; /* a plane beyond x, a point of D */
+                    break;
+                }
+                if (gp <= tol) {
+                    if (!parallel(m.d_best, x)) out->direction = m.d_best;
+                    out->gap = gp > 0.0 ? gp : 0.0;
+                    out->gap_valid = 1;
+                    out->outcome = gp <= requested ? AGJK__CONVERGED : AGJK__AT_FLOOR;
+                    break;
+                }
+            }
             double fallback = tol;
             if (in->relative) {
                 double scaled = in->tolerance * md->magnitude * md->magnitude;
@@ -231,6 +246,7 @@ void agjk__solve(agjk__minkowski *md, const agjk__solve_input *in, agjk__solve_o
                 ++out->support_calls;
                 follow_rescale(md, simplex, count, &x, &m, &d);
                 if (support_ends_query(md, in, d, &s, out)) break;
+                if (m.method == AGJK_METHOD_ADAPTIVE) agjk__momentum_plane(&m, d, s.w, x);
                 /* The support may have changed the units: recompute in them. */
                 x2 = v3_norm2(x);
                 requested = requested_tolerance(in, md, x2);
@@ -282,8 +298,8 @@ void agjk__solve(agjk__minkowski *md, const agjk__solve_input *in, agjk__solve_o
             m.active = 0;
             out->momentum_stop = k;
         }
-        m.d_prev = d;
-        m.s_prev = s.w;
+        /* d_{k-1}, s_{k-1}; the adaptive method may switch phase here. */
+        if (agjk__momentum_update(&m, k, d, s.w)) out->momentum_stop = k;
     }
 
     /* Without a valid gap at the final iterate (cap, stall, or momentum still

@@ -6,16 +6,47 @@
 
 #include "minkowski.h"
 
-/* Direction policy state (Montaut et al. 2022, Alg. 6/7; GJK++ for Polyak). */
+/* Direction policy state (Montaut et al. 2022, Alg. 6/7; GJK++ for Polyak;
+ * the adaptive rule of direction.c). */
 typedef struct agjk__momentum {
     agjk_method method;
     int active;       /* momentum still in use (0 after the Alg. 6 fallback) */
     agjk_vec3 d_prev; /* d_{k-1} */
     agjk_vec3 s_prev; /* s_{k-1} */
+    /* AGJK_METHOD_ADAPTIVE only (see direction.c). */
+    int phase;        /* AGJK__PHASE_* */
+    double plane;     /* best lower bound max <d_i, s_i> / ||d_i|| on ||x*||, solver units */
+    double plane_before; /* plane before the last support */
+    double omega;     /* <d, s> / ||d|| of the last support */
+    agjk_vec3 x_k;    /* iterate at which the last support was asked */
+    agjk_vec3 d_best; /* direction of the best plane */
 } agjk__momentum;
+
+/* Phases of the adaptive method; the other methods stay in AGJK__PHASE_FIXED. */
+enum { AGJK__PHASE_FIXED = 0, AGJK__PHASE_POLYAK, AGJK__PHASE_NESTEROV, AGJK__PHASE_FINAL };
+
+/* Prepares the policy for a query started at x_0. */
+void agjk__momentum_init(agjk__momentum *m, agjk_method method, agjk_vec3 x0);
 
 /* Support direction d_k for iterate x_k at iteration k while momentum is active. */
 agjk_vec3 agjk__momentum_direction(const agjk__momentum *m, int k, agjk_vec3 x);
+
+/* Adaptive method: records the support plane of s (a point of D) found in
+ * direction d at iterate x (before the stopping tests). */
+void agjk__momentum_plane(agjk__momentum *m, agjk_vec3 d, agjk_vec3 s, agjk_vec3 x);
+
+/* End of iteration k, which searched direction d and found s: keeps them as
+ * d_{k-1}, s_{k-1}, and lets the adaptive method switch phase. Returns 1 when
+ * the adaptive method switched momentum off for good. */
+int agjk__momentum_update(agjk__momentum *m, int k, agjk_vec3 d, agjk_vec3 s);
+
+/* Adaptive method: the gap that the best support plane seen so far certifies at
+ * x, 2 ||x|| (||x|| - plane) >= ||x||^2 - ||x*||^2 >= ||x - x*||^2; +inf
+ * before any plane. */
+double agjk__momentum_plane_gap(const agjk__momentum *m, agjk_vec3 x);
+
+/* Multiplies the policy's stored vectors by the power of two f (rescaling). */
+void agjk__momentum_rescale(agjk__momentum *m, double f);
 
 /* Whether a method uses momentum at all. */
 int agjk__method_has_momentum(agjk_method method);
@@ -45,7 +76,9 @@ typedef struct agjk__solve_output {
     agjk__outcome outcome;
     agjk_vec3 x;         /* final iterate (A's frame) */
     agjk_vec3 a, b;      /* core points on A and B with a - b = x (A's frame) */
-    agjk_vec3 direction; /* separating direction (SEPARATED_EARLY) */
+    agjk_vec3 direction; /* separating direction (SEPARATED_EARLY), or the normal of
+                            the support plane that certified x when it is not x
+                            itself (adaptive method), else zero */
     double gap;          /* duality gap at x; valid when gap_valid */
     int gap_valid;
     double noise;        /* floating-point error scale of w, length units */
