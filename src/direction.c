@@ -14,11 +14,13 @@
  *   2. Nesterov phase (Alg. 6): entered at the end of the first iteration whose
  *      best support plane is below 0.9 ||x_k|| (a relative gap of 10% or more:
  *      close or overlapping shapes, where momentum pays).
- *   3. Plain GJK to the end: after the Alg. 6 fallback, or as soon as a
- *      momentum support gives a worse lower bound <d_k, s_k> / ||d_k|| than the
- *      best so far (the momentum overshoots: adaptive restart in the sense of
+ *   3. Plain GJK to the end: after the Alg. 6 fallback; as soon as a Nesterov
+ *      support gives a worse lower bound <d_k, s_k> / ||d_k|| than the best so
+ *      far (the momentum overshoots: adaptive restart in the sense of
  *      O'Donoghue and Candes, "Adaptive restart for accelerated gradient
- *      schemes", 2015, here restarting to the gradient direction for good).
+ *      schemes", 2015, here restarting to the gradient direction for good);
+ *      or as soon as a support point of A or of B repeats exactly (a vertex:
+ *      flat faces, where GJK's exact steps beat momentum).
  *
  * Every support s found in a direction d gives the plane <d, .> >= <d, s> that
  * bounds D, hence ||x*|| >= <d, s> / ||d||, whatever d was (momentum or not).
@@ -46,6 +48,7 @@ void agjk__momentum_init(agjk__momentum *m, agjk_method method, agjk_vec3 x0) {
     m->omega = -INFINITY;
     m->x_k = x0;
     m->d_best = x0;
+    m->a_prev = m->b_prev = x0;
 }
 
 void agjk__momentum_rescale(agjk__momentum *m, double f) {
@@ -55,6 +58,8 @@ void agjk__momentum_rescale(agjk__momentum *m, double f) {
     m->plane *= f;
     m->plane_before *= f;
     m->omega *= f;
+    m->a_prev = v3_scale(m->a_prev, f);
+    m->b_prev = v3_scale(m->b_prev, f);
 }
 
 void agjk__momentum_plane(agjk__momentum *m, agjk_vec3 d, agjk_vec3 s, agjk_vec3 x) {
@@ -74,21 +79,33 @@ double agjk__momentum_plane_gap(const agjk__momentum *m, agjk_vec3 x) {
     return 2.0 * n * (n - m->plane);
 }
 
-int agjk__momentum_update(agjk__momentum *m, int k, agjk_vec3 d, agjk_vec3 s) {
+static int same_point(agjk_vec3 p, agjk_vec3 q) { return p.x == q.x && p.y == q.y && p.z == q.z; }
+
+int agjk__momentum_update(agjk__momentum *m, int k, agjk_vec3 d, const agjk__vertex *s) {
     int stopped = 0;
     if (m->method == AGJK_METHOD_ADAPTIVE && k > 0 && m->phase != AGJK__PHASE_FINAL) {
+        /* A point of A or of B met again, bit for bit, in another direction:
+         * a vertex, so a flat-faced shape, where momentum directions keep
+         * landing on vertices already in the simplex (each such support is
+         * wasted) and plain GJK steps land exactly on the optimal face. */
+        int flat = same_point(s->a, m->a_prev) || same_point(s->b, m->b_prev);
         if (!m->active) {
             m->phase = AGJK__PHASE_FINAL; /* the solver's Alg. 6 fallback */
-        } else if (m->phase == AGJK__PHASE_POLYAK) {
-            if (m->plane < ADAPTIVE_CLOSE_RATIO * v3_norm(m->x_k)) m->phase = AGJK__PHASE_NESTEROV;
-        } else if (m->omega < m->plane_before) {
-            m->phase = AGJK__PHASE_FINAL; /* restart: plain GJK directions */
+        } else if (flat || (m->phase == AGJK__PHASE_NESTEROV && m->omega < m->plane_before)) {
+            /* Restart to plain GJK directions for good (flat faces, or a
+             * momentum step whose plane is worse than the best so far). */
+            m->phase = AGJK__PHASE_FINAL;
             m->active = 0;
             stopped = 1;
+        } else if (m->phase == AGJK__PHASE_POLYAK &&
+                   m->plane < ADAPTIVE_CLOSE_RATIO * v3_norm(m->x_k)) {
+            m->phase = AGJK__PHASE_NESTEROV;
         }
     }
     m->d_prev = d;
-    m->s_prev = s;
+    m->s_prev = s->w;
+    m->a_prev = s->a;
+    m->b_prev = s->b;
     return stopped;
 }
 

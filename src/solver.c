@@ -299,7 +299,7 @@ void agjk__solve(agjk__minkowski *md, const agjk__solve_input *in, agjk__solve_o
             out->momentum_stop = k;
         }
         /* d_{k-1}, s_{k-1}; the adaptive method may switch phase here. */
-        if (agjk__momentum_update(&m, k, d, s.w)) out->momentum_stop = k;
+        if (agjk__momentum_update(&m, k, d, &s)) out->momentum_stop = k;
     }
 
     /* Without a valid gap at the final iterate (cap, stall, or momentum still

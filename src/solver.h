@@ -20,6 +20,7 @@ typedef struct agjk__momentum {
     double omega;     /* <d, s> / ||d|| of the last support */
     agjk_vec3 x_k;    /* iterate at which the last support was asked */
     agjk_vec3 d_best; /* direction of the best plane */
+    agjk_vec3 a_prev, b_prev; /* points of A and B of the last support */
 } agjk__momentum;
 
 /* Phases of the adaptive method; the other methods stay in AGJK__PHASE_FIXED. */
@@ -38,7 +39,7 @@ void agjk__momentum_plane(agjk__momentum *m, agjk_vec3 d, agjk_vec3 s, agjk_vec3
 /* End of iteration k, which searched direction d and found s: keeps them as
  * d_{k-1}, s_{k-1}, and lets the adaptive method switch phase. Returns 1 when
  * the adaptive method switched momentum off for good. */
-int agjk__momentum_update(agjk__momentum *m, int k, agjk_vec3 d, agjk_vec3 s);
+int agjk__momentum_update(agjk__momentum *m, int k, agjk_vec3 d, const agjk__vertex *s);
 
 /* Adaptive method: the gap that the best support plane seen so far certifies at
  * x, 2 ||x|| (||x|| - plane) >= ||x||^2 - ||x*||^2 >= ||x - x*||^2; +inf
