@@ -49,6 +49,7 @@ void agjk__momentum_init(agjk__momentum *m, agjk_method method, agjk_vec3 x0) {
     m->x_k = x0;
     m->d_best = x0;
     m->a_prev = m->b_prev = x0;
+    m->flat_seen = 0;
 }
 
 void agjk__momentum_rescale(agjk__momentum *m, double f) {
@@ -73,22 +74,17 @@ void agjk__momentum_plane(agjk__momentum *m, agjk_vec3 d, agjk_vec3 s, agjk_vec3
     m->x_k = x;
 }
 
-double agjk__momentum_plane_gap(const agjk__momentum *m, agjk_vec3 x) {
-    if (!(m->plane > -INFINITY)) return INFINITY;
-    double n = v3_norm(x);
-    return 2.0 * n * (n - m->plane);
-}
-
 static int same_point(agjk_vec3 p, agjk_vec3 q) { return p.x == q.x && p.y == q.y && p.z == q.z; }
 
 int agjk__momentum_update(agjk__momentum *m, int k, agjk_vec3 d, const agjk__vertex *s) {
     int stopped = 0;
+    /* A point of A or of B met again, bit for bit, in another direction: a
+     * vertex, so a flat-faced shape, where momentum directions keep landing on
+     * vertices already in the simplex (each such support is wasted) and plain
+     * GJK steps land exactly on the optimal face. */
+    int flat = k > 0 && (same_point(s->a, m->a_prev) || same_point(s->b, m->b_prev));
+    if (flat) m->flat_seen = 1;
     if (m->method == AGJK_METHOD_ADAPTIVE && k > 0 && m->phase != AGJK__PHASE_FINAL) {
-        /* A point of A or of B met again, bit for bit, in another direction:
-         * a vertex, so a flat-faced shape, where momentum directions keep
-         * landing on vertices already in the simplex (each such support is
-         * wasted) and plain GJK steps land exactly on the optimal face. */
-        int flat = same_point(s->a, m->a_prev) || same_point(s->b, m->b_prev);
         if (!m->active) {
             m->phase = AGJK__PHASE_FINAL; /* the solver's Alg. 6 fallback */
         } else if (flat || (m->phase == AGJK__PHASE_NESTEROV && m->omega < m->plane_before)) {

@@ -3,6 +3,7 @@
 #include <string.h>
 
 #include "agjk/query.h"
+#include "cache.h"
 #include "solver.h"
 
 static int shape_is_valid(const agjk_shape *shape) {
@@ -60,7 +61,7 @@ static agjk_vec3 initial_guess(const agjk_options *opts, const agjk_pose *pose_a
 
 static agjk_status run(const agjk_shape *a, const agjk_pose *pose_a, const agjk_shape *b,
                        const agjk_pose *pose_b, const agjk_options *options,
-                       agjk_result *result, int boolean_mode) {
+                       agjk_result *result, int boolean_mode, agjk_cache *cache) {
     if (!result) return AGJK_STATUS_INVALID_INPUT;
     memset(result, 0, sizeof *result);
     result->momentum_stop_iteration = -1;
@@ -82,9 +83,25 @@ static agjk_status run(const agjk_shape *a, const agjk_pose *pose_a, const agjk_
     in.tolerance = opts.tolerance;
     in.max_iterations = opts.max_iterations;
     in.x0 = initial_guess(&opts, pose_a, &md);
+    in.warm_count = 0;
+    if (cache) agjk__cache_load(cache, a, b, &md, &in); /* warm start (cache.c) */
 
     agjk__solve_output out;
     agjk__solve(&md, &in, &out);
+    if (out.outcome == AGJK__WARM_REJECTED) {
+        /* A stale cache: the same query cold; every support call counts. */
+        int calls = out.support_calls, iterations = out.iterations;
+        agjk__minkowski_init(&md, a, pose_a, b, pose_b, opts.hint_a, opts.hint_b);
+        in.warm_count = 0;
+        in.x0 = initial_guess(&opts, pose_a, &md);
+        agjk__solve(&md, &in, &out);
+        out.support_calls += calls;
+        out.iterations += iterations;
+    }
+    if (cache) {
+        if (out.outcome == AGJK__BAD_SUPPORT) agjk_cache_init(cache);
+        else agjk__cache_save(cache, a, b, &md, &out);
+    }
 
     result->iterations = out.iterations;
     result->support_calls = out.support_calls;
@@ -159,11 +176,30 @@ static agjk_status run(const agjk_shape *a, const agjk_pose *pose_a, const agjk_
 agjk_status agjk_distance(const agjk_shape *a, const agjk_pose *pose_a, const agjk_shape *b,
                           const agjk_pose *pose_b, const agjk_options *options,
                           agjk_result *result) {
-    return run(a, pose_a, b, pose_b, options, result, 0);
+    return run(a, pose_a, b, pose_b, options, result, 0, NULL);
 }
 
 agjk_status agjk_collide(const agjk_shape *a, const agjk_pose *pose_a, const agjk_shape *b,
                          const agjk_pose *pose_b, const agjk_options *options,
                          agjk_result *result) {
-    return run(a, pose_a, b, pose_b, options, result, 1);
+    return run(a, pose_a, b, pose_b, options, result, 1, NULL);
+}
+
+/* The warm-started queries of agjk/cache.h. */
+agjk_status agjk_distance_cached(const agjk_shape *a, const agjk_pose *pose_a,
+                                 const agjk_shape *b, const agjk_pose *pose_b,
+                                 const agjk_options *options, agjk_cache *cache,
+                                 agjk_result *result) {
+    agjk_status status = run(a, pose_a, b, pose_b, options, result, 0, cache);
+    if (status == AGJK_STATUS_INVALID_INPUT && cache) agjk_cache_init(cache);
+    return status;
+}
+
+agjk_status agjk_collide_cached(const agjk_shape *a, const agjk_pose *pose_a,
+                                const agjk_shape *b, const agjk_pose *pose_b,
+                                const agjk_options *options, agjk_cache *cache,
+                                agjk_result *result) {
+    agjk_status status = run(a, pose_a, b, pose_b, options, result, 1, cache);
+    if (status == AGJK_STATUS_INVALID_INPUT && cache) agjk_cache_init(cache);
+    return status;
 }

@@ -136,9 +136,38 @@ static void update_frank_wolfe(agjk__vertex *simplex, int *count, double lambda[
     *x = simplex[0].w;
 }
 
+/* Below -lie_level, g (or the adaptive plane gap) at x proves that a support
+ * function lies. Warm-started points (cache.c) carry a few more ulps of
+ * rounding from their frame changes. */
+static double lie_level(const agjk__solve_input *in, const agjk__minkowski *md, double x2) {
+    return (in->warm_count > 0 ? 16.0 : 4.0) * sqrt(x2) * noise_scale(md);
+}
+
 static int parallel(agjk_vec3 d, agjk_vec3 x) {
     agjk_vec3 c = v3_cross(d, x);
     return v3_norm2(c) == 0.0 && v3_dot(d, x) > 0.0;
+}
+
+/* Adaptive method: stops at x (a point of D) when the best support plane met
+ * so far certifies it (direction.c), or when that plane lies beyond x, which
+ * proves a lying support. Returns 1 with out->outcome set. */
+static int plane_stops(const agjk__momentum *m, const agjk__solve_input *in,
+                       const agjk__minkowski *md, agjk_vec3 x, agjk__solve_output *out) {
+    double x2 = v3_norm2(x), n = sqrt(x2), noise = noise_scale(md);
+    /* 2 ||x|| (||x|| - plane) >= ||x||^2 - ||x*||^2 >= ||x - x*||^2 */
+    double gp = 2.0 * n * (n - m->plane);
+    if (gp < -lie_level(in, md, x2)) {
+        out->outcome = AGJK__BAD_SUPPORT; /* a plane beyond x, a point of D */
+        return 1;
+    }
+    /* Written so that NaN (no plane yet at x = 0) does not stop. */
+    if (!(gp <= floor_tolerance(x2, noise)) && !(gp <= requested_tolerance(in, md, x2))) return 0;
+    double requested = requested_tolerance(in, md, x2);
+    if (!parallel(m->d_best, x)) out->direction = m->d_best;
+    out->gap = gp > 0.0 ? gp : 0.0;
+    out->gap_valid = 1;
+    out->outcome = gp <= requested ? AGJK__CONVERGED : AGJK__AT_FLOOR;
+    return 1;
 }
 
 void agjk__solve(agjk__minkowski *md, const agjk__solve_input *in, agjk__solve_output *out) {
@@ -162,6 +191,7 @@ void agjk__solve(agjk__minkowski *md, const agjk__solve_input *in, agjk__solve_o
      * x_0 gives d_0 = x_0), also tells the problem's size: from then on the
      * solver works in units where it is about 1. */
     agjk__vertex s;
+    int warm_enclosed = 0;
     {
         /* The problem's size is not known yet: give the callbacks a unit-size
          * direction (exact power-of-two scaling of x_0). */
@@ -184,6 +214,14 @@ void agjk__solve(agjk__minkowski *md, const agjk__solve_input *in, agjk__solve_o
         if (!v3_in_range(x_units) || v3_maxabs(x_units) < 1.0 / AGJK_MAX_COORDINATE)
             x_units = v3_normalize(x);
         x = x_units;
+        /* Warm start: the cached simplex is the active set at k = 0, and plain
+         * GJK directions take it from there (cache.c). */
+        if (in->warm_count > 0) {
+            count = agjk__warm_seed(in, f * shrunk, simplex, lambda, &x);
+            have_x = 1;
+            warm_enclosed = count == 4;
+            m.active = 0;
+        }
         m.d_prev = x;
         m.s_prev = x;
     }
@@ -197,6 +235,12 @@ void agjk__solve(agjk__minkowski *md, const agjk__solve_input *in, agjk__solve_o
             follow_rescale(md, simplex, count, &x, &m, &d);
         }
         if (support_ends_query(md, in, d, &s, out)) break;
+        /* Warm start: a support plane that cuts off a cached point (cache.c). */
+        if (in->warm_count > 0 && !agjk__warm_consistent(simplex, count, d, &s, noise_scale(md))) {
+            out->outcome = AGJK__WARM_REJECTED;
+            break;
+        }
+        if (warm_enclosed) { out->outcome = AGJK__INTERSECTING; break; }
         /* Adaptive method: every support plane is a lower bound (direction.c). */
         if (m.method == AGJK_METHOD_ADAPTIVE) agjk__momentum_plane(&m, d, s.w, x);
         if (have_x) {
@@ -205,6 +249,7 @@ void agjk__solve(agjk__minkowski *md, const agjk__solve_input *in, agjk__solve_o
             double floor = floor_tolerance(x2, noise_scale(md));
             double tol = requested > floor ? requested : floor;
             double g = 2.0 * v3_dot(x, v3_sub(x, s.w)); /* eq. 29 */
+            double lie = lie_level(in, md, x2);
             /* Alg. 6 switches momentum off once g(x_k) <= eps. A relative
              * tolerance shrinks with the distance and never fires on
              * overlapping shapes, so momentum would creep on for ever: for
@@ -212,20 +257,7 @@ void agjk__solve(agjk__minkowski *md, const agjk__solve_input *in, agjk__solve_o
             /* Adaptive method: the best support plane met so far, in whatever
              * direction, certifies x as well as the gap does (no extra support
              * in direction x_k once momentum has done its work). */
-            if (m.method == AGJK_METHOD_ADAPTIVE) {
-                double gp = agjk__momentum_plane_gap(&m, x);
-                if (gp < -4.0 * sqrt(x2) * noise_scale(md)) {
-                    out->outcome = AGJK__BAD_SUPPORT; /* a plane beyond x, a point of D */
-                    break;
-                }
-                if (gp <= tol) {
-                    if (!parallel(m.d_best, x)) out->direction = m.d_best;
-                    out->gap = gp > 0.0 ? gp : 0.0;
-                    out->gap_valid = 1;
-                    out->outcome = gp <= requested ? AGJK__CONVERGED : AGJK__AT_FLOOR;
-                    break;
-                }
-            }
+            if (m.method == AGJK_METHOD_ADAPTIVE && plane_stops(&m, in, md, x, out)) break;
             double fallback = tol;
             if (in->relative) {
                 double scaled = in->tolerance * md->magnitude * md->magnitude;
@@ -253,11 +285,12 @@ void agjk__solve(agjk__minkowski *md, const agjk__solve_input *in, agjk__solve_o
                 floor = floor_tolerance(x2, noise_scale(md));
                 tol = requested > floor ? requested : floor;
                 g = 2.0 * v3_dot(x, v3_sub(x, s.w));
+                lie = lie_level(in, md, x2);
             }
             if (!m.active) {
                 /* x is in D and s minimises <x, .> over D, so g >= 0 up to
                  * rounding. Clearly negative: the support function lies. */
-                if (g < -4.0 * sqrt(x2) * noise_scale(md)) {
+                if (g < -lie) {
                     out->outcome = AGJK__BAD_SUPPORT;
                     break;
                 }
@@ -298,6 +331,9 @@ void agjk__solve(agjk__minkowski *md, const agjk__solve_input *in, agjk__solve_o
             m.active = 0;
             out->momentum_stop = k;
         }
+        /* Adaptive method: the planes met so far may certify x_{k+1} already,
+         * before any support in its direction. */
+        if (m.method == AGJK_METHOD_ADAPTIVE && plane_stops(&m, in, md, x, out)) break;
         /* d_{k-1}, s_{k-1}; the adaptive method may switch phase here. */
         if (agjk__momentum_update(&m, k, d, &s)) out->momentum_stop = k;
     }
@@ -318,6 +354,9 @@ void agjk__solve(agjk__minkowski *md, const agjk__solve_input *in, agjk__solve_o
 
     out->x = x;
     out->noise = noise_scale(md);
+    out->count = count;
+    for (int i = 0; i < count; ++i) out->simplex[i] = simplex[i];
+    out->flat = m.flat_seen;
     agjk_vec3 a = v3(0.0, 0.0, 0.0), b = v3(0.0, 0.0, 0.0);
     for (int i = 0; in->want_witness && i < count; ++i) {
         a = v3_add(a, v3_scale(simplex[i].a, lambda[i]));

@@ -21,6 +21,7 @@ typedef struct agjk__momentum {
     agjk_vec3 x_k;    /* iterate at which the last support was asked */
     agjk_vec3 d_best; /* direction of the best plane */
     agjk_vec3 a_prev, b_prev; /* points of A and B of the last support */
+    int flat_seen;    /* a point of A or B came back bit for bit (any method) */
 } agjk__momentum;
 
 /* Phases of the adaptive method; the other methods stay in AGJK__PHASE_FIXED. */
@@ -41,11 +42,6 @@ void agjk__momentum_plane(agjk__momentum *m, agjk_vec3 d, agjk_vec3 s, agjk_vec3
  * the adaptive method switched momentum off for good. */
 int agjk__momentum_update(agjk__momentum *m, int k, agjk_vec3 d, const agjk__vertex *s);
 
-/* Adaptive method: the gap that the best support plane seen so far certifies at
- * x, 2 ||x|| (||x|| - plane) >= ||x||^2 - ||x*||^2 >= ||x - x*||^2; +inf
- * before any plane. */
-double agjk__momentum_plane_gap(const agjk__momentum *m, agjk_vec3 x);
-
 /* Multiplies the policy's stored vectors by the power of two f (rescaling). */
 void agjk__momentum_rescale(agjk__momentum *m, double f);
 
@@ -60,7 +56,8 @@ typedef enum agjk__outcome {
     AGJK__ITERATION_CAP,
     AGJK__STALLED,        /* no decrease of ||x|| in floating point */
     AGJK__AT_ROUNDING,    /* ||x|| below the rounding level: touching to rounding */
-    AGJK__BAD_SUPPORT     /* a support callback returned a non-finite point */
+    AGJK__BAD_SUPPORT,    /* a support callback returned a non-finite point */
+    AGJK__WARM_REJECTED   /* a support plane cut off a warm-start point: rerun cold */
 } agjk__outcome;
 
 typedef struct agjk__solve_input {
@@ -71,6 +68,13 @@ typedef struct agjk__solve_input {
     double tolerance;
     int max_iterations;
     agjk_vec3 x0;       /* initial guess (A's frame), non-zero */
+    /* Warm start (cache.c): up to 4 points of D in A's frame, caller units,
+     * whose projection is x0; warm_count 0 for a cold start. */
+    int warm_count;
+    agjk__vertex warm[4];
+    unsigned warm_mask;       /* their projection: support mask, weights, point */
+    double warm_lambda[4];
+    agjk_vec3 warm_x;
 } agjk__solve_input;
 
 typedef struct agjk__solve_output {
@@ -86,8 +90,22 @@ typedef struct agjk__solve_output {
     int iterations;
     int support_calls;
     int momentum_stop;
+    agjk__vertex simplex[4]; /* final active set (solver units), for the cache */
+    int count;
+    int flat;            /* a point of A or B came back (flat faces), for the cache */
 } agjk__solve_output;
 
 void agjk__solve(agjk__minkowski *md, const agjk__solve_input *in, agjk__solve_output *out);
+
+/* Warm start (cache.c). Puts in->warm, scaled by the power of two f, into
+ * simplex[] as the active set with its weights and projection *x. Returns the
+ * number of vertices kept; 4 when they enclose the origin (*x = 0). */
+int agjk__warm_seed(const agjk__solve_input *in, double f, agjk__vertex simplex[4],
+                    double lambda[4], agjk_vec3 *x);
+
+/* Warm start (cache.c): 0 when the plane of the support s found in direction d
+ * cuts off a vertex of simplex[] (which is then not a point of D), else 1. */
+int agjk__warm_consistent(const agjk__vertex *simplex, int count, agjk_vec3 d,
+                          const agjk__vertex *s, double noise);
 
 #endif

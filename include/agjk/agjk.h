@@ -14,5 +14,6 @@
 #include "agjk/shapes.h"
 #include "agjk/query.h"
 #include "agjk/polytope.h"
+#include "agjk/cache.h"
 
 #endif /* AGJK_AGJK_H */

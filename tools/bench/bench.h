@@ -17,6 +17,7 @@ typedef struct bench_config {
     int box_pairs, hull_pairs, hull_poses, mesh_pairs, mesh_poses, max_meshes;
     int reps, slow_reps, slow_pairs, slow_max_iterations, max_iterations;
     int wp_pairs, wp_reps, ccd_reps;
+    int coherent_pairs, coherent_steps, coherent_reps; /* coherent.c; pairs 0: off */
     double tolerance, mesh_scale, nesmino_mu;
     int quick, no_ccd, no_wp, relative, scan_support;
     const char *out_dir, *mesh_dir, *raw_path, *command_line;

@@ -9,6 +9,7 @@
 
 #include "bench.h"
 #include "ccd_adapter.h"
+#include "coherent.h"
 #include "guard.h"
 #include "hull_support.h"
 #include "mesh_io.h"
@@ -32,6 +33,9 @@ static void usage(FILE *f) {
         "  --wp-pairs K      pairs in the work-precision run (default 20; 0 disables)\n"
         "  --wp-reps R       repetitions in the work-precision run (default 10)\n"
         "  --ccd-reps R      repetitions in the libccd timing (default 50; 0 disables it)\n"
+        "  --coherent-pairs K  pairs per family moved along smooth trajectories, queried\n"
+        "                    cold, with hint + direction, and with agjk_cache (default 20;\n"
+        "                    0 disables); --coherent-steps T (200), --coherent-reps R (10)\n"
         "  --tolerance T     duality-gap tolerance of the tables (default 1e-8)\n"
         "  --relative        read tolerances as relative (AGJK_TOLERANCE_RELATIVE: g <= T ||x||^2)\n"
         "                    for agjk's methods; default absolute, as in the paper\n"
@@ -62,6 +66,9 @@ static int parse(int argc, char **argv, bench_config *c) {
     c->wp_pairs = 20;
     c->wp_reps = 10;
     c->ccd_reps = 50;
+    c->coherent_pairs = 20;
+    c->coherent_steps = 200;
+    c->coherent_reps = 10;
     c->max_meshes = 1000;
     c->tolerance = 1e-8;
     c->mesh_scale = 0.1;
@@ -81,6 +88,9 @@ static int parse(int argc, char **argv, bench_config *c) {
         INT_OPT("--wp-reps", wp_reps)
         INT_OPT("--ccd-reps", ccd_reps)
         INT_OPT("--max-meshes", max_meshes)
+        INT_OPT("--coherent-pairs", coherent_pairs)
+        INT_OPT("--coherent-steps", coherent_steps)
+        INT_OPT("--coherent-reps", coherent_reps)
 #undef INT_OPT
         if (strcmp(a, "--relative") == 0) { c->relative = 1; continue; }
         if (strcmp(a, "--scan-support") == 0) { c->scan_support = 1; continue; }
@@ -103,6 +113,9 @@ static int parse(int argc, char **argv, bench_config *c) {
             c->wp_reps = 3;
             c->ccd_reps = 5;
             c->max_meshes = 100;
+            c->coherent_pairs = 4;
+            c->coherent_steps = 100;
+            c->coherent_reps = 3;
             continue;
         }
         if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) { usage(stdout); exit(0); }
@@ -260,7 +273,7 @@ int main(int argc, char **argv) {
     bench_record *recs;
     ccd_bench_record *ccd_recs = NULL;
     unsigned char *ccd_outcome = NULL;
-    int h, cap_problems, cap_shapes;
+    int h, cap_problems, cap_shapes, coherent_bad = 0;
     double t0, t_all = bench_now_ns();
     static char command[1024];
     char mesh_note[256] = "";
@@ -386,6 +399,12 @@ int main(int argc, char **argv) {
     rep.mesh_note = mesh_note;
     rep.seconds[4] = (bench_now_ns() - t_all) * 1e-9;
     if (bench_write_reports(&rep) != 0) return 2;
+    if (cfg.coherent_pairs > 0 && cfg.coherent_steps > 0 && cfg.coherent_reps > 0) {
+        fprintf(stderr, "agjk-bench: coherent motion (%d pairs x %d steps, R = %d)\n",
+                cfg.coherent_pairs, cfg.coherent_steps, cfg.coherent_reps);
+        coherent_bad = bench_coherent_run(&cfg, &set, cfg.coherent_pairs, cfg.coherent_steps,
+                                          cfg.coherent_reps);
+    }
     if (cfg.raw_path) write_raw(cfg.raw_path, &set, recs, rep.rec_count);
     {
         /* Exit status: non-zero if any result lies outside its certified bound. */
@@ -402,6 +421,6 @@ int main(int argc, char **argv) {
         free(ccd_outcome);
         bench_free_meshes(&meshes);
         bench_set_free(&set);
-        return viol || wrong ? 1 : 0;
+        return viol || wrong || coherent_bad ? 1 : 0;
     }
 }
