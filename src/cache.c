@@ -7,7 +7,7 @@
  * Safety: a cache is used only for the pair that filled it and only when every
  * value in it is finite and in range; during the query each support plane is
  * checked against the cached points (agjk__warm_consistent), and a point cut
- * off by one sends the query back to a cold start (query.c). */
+ * off by one drops them all: the query goes on from that support (solver.c). */
 #include <string.h>
 
 #include "agjk/cache.h"
@@ -32,13 +32,48 @@ void agjk_cache_init_sized(agjk_cache *cache, size_t struct_size) {
  * 3.0 / 5.1. */
 #define CACHE_DIRECTION_WEIGHT 100.0
 
+/* FNV-1a over 64-bit words: a check value of the cache's content, so that
+ * garbage or hand-edited memory is not mistaken for a simplex of the pair.
+ * (Not a defence against a deliberate forger, who could as well corrupt the
+ * shapes.) count must be in 0..4. */
+static uint64_t mix(uint64_t h, const void *p, size_t n) {
+    uint64_t w = 0;
+    memcpy(&w, p, n <= sizeof w ? n : sizeof w);
+    return (h ^ w) * 0x100000001b3u;
+}
+
+static uint64_t mix_vec(uint64_t h, agjk_vec3 v) {
+    h = mix(h, &v.x, sizeof v.x);
+    h = mix(h, &v.y, sizeof v.y);
+    return mix(h, &v.z, sizeof v.z);
+}
+
+static uint64_t cache_check(const agjk_cache *c) {
+    uint64_t h = 0xcbf29ce484222325u;
+    h = mix(h, &c->count, sizeof c->count);
+    h = mix(h, &c->hint_a, sizeof c->hint_a);
+    h = mix(h, &c->hint_b, sizeof c->hint_b);
+    h = mix(h, &c->flags, sizeof c->flags);
+    h = mix(h, &c->support_a, sizeof c->support_a);
+    h = mix(h, &c->support_b, sizeof c->support_b);
+    h = mix(h, &c->data_a, sizeof c->data_a);
+    h = mix(h, &c->data_b, sizeof c->data_b);
+    for (int i = 0; i < c->count; ++i) {
+        h = mix_vec(h, c->point_a[i]);
+        h = mix_vec(h, c->point_b[i]);
+    }
+    h = mix_vec(h, c->direction);
+    return mix_vec(h, c->direction_prev);
+}
+
 /* Whether the cache was filled for the pair (a, b) and holds sane values. */
 static int cache_usable(const agjk_cache *c, const agjk_shape *a, const agjk_shape *b) {
     if (c->struct_size != sizeof *c) return 0;
-    if (c->count < 1 || c->count > 4) return 0;
+    if (c->count < 0 || c->count > 4) return 0;
     if (c->support_a != a->support || c->data_a != a->data || c->support_b != b->support ||
         c->data_b != b->data)
         return 0;
+    if (c->check != cache_check(c)) return 0;
     return v3_in_range(c->direction) && v3_in_range(c->direction_prev);
 }
 
@@ -59,7 +94,8 @@ int agjk__cache_load(const agjk_cache *cache, const agjk_shape *a, const agjk_sh
     md->hint_b = cache->hint_b;
     double last = v3_norm(cache->direction);
     int simplex = (cache->flags & AGJK_CACHE_FLAT) || cache->count == 4 || !(last > 0.0);
-    if (!simplex || in->method == AGJK_METHOD_FRANK_WOLFE) {
+    if (cache->count == 0 && !(last > 0.0)) return 0;
+    if (!simplex || cache->count == 0 || in->method == AGJK_METHOD_FRANK_WOLFE) {
         /* A direction only (Frank-Wolfe's active set is its iterate alone). */
         if (last > 0.0)
             in->x0 = v3_scale(extrapolate(cache->direction, cache->direction_prev),
@@ -90,33 +126,22 @@ int agjk__cache_load(const agjk_cache *cache, const agjk_shape *a, const agjk_sh
     return 1;
 }
 
-int agjk__warm_seed(const agjk__solve_input *in, double f, agjk__vertex simplex[4],
-                    double lambda[4], agjk_vec3 *x) {
-    agjk_vec3 w[4];
-    double l[4];
-    agjk_vec3 p = in->warm_x;
-    unsigned mask = in->warm_mask;
-    for (int i = 0; i < 4; ++i) l[i] = in->warm_lambda[i];
-    for (int i = 0; i < in->warm_count; ++i) {
-        simplex[i].a = v3_scale(in->warm[i].a, f);
-        simplex[i].b = v3_scale(in->warm[i].b, f);
-        simplex[i].w = v3_scale(in->warm[i].w, f);
-        w[i] = simplex[i].w;
-    }
-    /* Projected in the caller's units by agjk__cache_load; again after a
-     * rescaling (exact, but the projection's rounding is not scale-free at the
-     * extremes where rescaling happens). */
-    if (f != 1.0) mask = agjk__simplex_project(w, in->warm_count, l, &p);
-    *x = p;
-    if (mask == 0xFu) {
-        for (int i = 0; i < 4; ++i) lambda[i] = l[i];
+int agjk__warm_seed(const agjk__solve_input *in, agjk__vertex simplex[4], double lambda[4],
+                    agjk_vec3 *x) {
+    /* Projected by agjk__cache_load already: keep the support set. */
+    *x = in->warm_x;
+    if (in->warm_mask == 0xFu) {
+        for (int i = 0; i < 4; ++i) {
+            simplex[i] = in->warm[i];
+            lambda[i] = in->warm_lambda[i];
+        }
         return 4;
     }
     int kept = 0;
     for (int i = 0; i < in->warm_count; ++i) {
-        if (mask & (1u << i)) {
-            simplex[kept] = simplex[i];
-            lambda[kept] = l[i];
+        if (in->warm_mask & (1u << i)) {
+            simplex[kept] = in->warm[i];
+            lambda[kept] = in->warm_lambda[i];
             ++kept;
         }
     }
@@ -159,11 +184,14 @@ void agjk__cache_save(agjk_cache *cache, const agjk_shape *a, const agjk_shape *
     cache->data_b = b->data;
     cache->hint_a = md->hint_a;
     cache->hint_b = md->hint_b;
+    /* Length: ||x||; but a Boolean query that stopped on its first support
+     * has no point of D yet (x is x_0): keep the previous length. */
+    double length = out->count == 0 && v3_maxabs(before) > 0.0 ? v3_norm(before) : v3_norm(x);
     cache->direction = x;
-    /* The normal of the plane that certified x, when it is not x's own, is
-     * the better estimate of x*'s direction (solver.c, adaptive method). */
+    /* The normal of the plane that certified x (or separated the shapes), when
+     * it is not x's own, is the better estimate of x*'s direction (solver.c). */
     if (v3_maxabs(out->direction) > 0.0)
-        cache->direction = v3_scale(v3_normalize(out->direction), v3_norm(x));
+        cache->direction = v3_scale(v3_normalize(out->direction), length);
     int n = out->count < 0 ? 0 : out->count > 4 ? 4 : out->count;
     for (int i = 0; i < n; ++i) {
         agjk_vec3 pa = v3_scale(out->simplex[i].a, inv);
@@ -176,4 +204,5 @@ void agjk__cache_save(agjk_cache *cache, const agjk_shape *a, const agjk_shape *
         cache->point_b[i] = pb;
     }
     cache->count = n;
+    cache->check = cache_check(cache);
 }

@@ -88,16 +88,6 @@ static agjk_status run(const agjk_shape *a, const agjk_pose *pose_a, const agjk_
 
     agjk__solve_output out;
     agjk__solve(&md, &in, &out);
-    if (out.outcome == AGJK__WARM_REJECTED) {
-        /* A stale cache: the same query cold; every support call counts. */
-        int calls = out.support_calls, iterations = out.iterations;
-        agjk__minkowski_init(&md, a, pose_a, b, pose_b, opts.hint_a, opts.hint_b);
-        in.warm_count = 0;
-        in.x0 = initial_guess(&opts, pose_a, &md);
-        agjk__solve(&md, &in, &out);
-        out.support_calls += calls;
-        out.iterations += iterations;
-    }
     if (cache) {
         if (out.outcome == AGJK__BAD_SUPPORT) agjk_cache_init(cache);
         else agjk__cache_save(cache, a, b, &md, &out);

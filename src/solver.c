@@ -191,7 +191,8 @@ void agjk__solve(agjk__minkowski *md, const agjk__solve_input *in, agjk__solve_o
      * x_0 gives d_0 = x_0), also tells the problem's size: from then on the
      * solver works in units where it is about 1. */
     agjk__vertex s;
-    int warm_enclosed = 0;
+    agjk_vec3 d0;                        /* direction of the first support */
+    int warm = 0, warm_enclosed = 0;     /* cached points in the simplex (cache.c) */
     {
         /* The problem's size is not known yet: give the callbacks a unit-size
          * direction (exact power-of-two scaling of x_0). */
@@ -214,11 +215,14 @@ void agjk__solve(agjk__minkowski *md, const agjk__solve_input *in, agjk__solve_o
         if (!v3_in_range(x_units) || v3_maxabs(x_units) < 1.0 / AGJK_MAX_COORDINATE)
             x_units = v3_normalize(x);
         x = x_units;
+        d0 = x;
         /* Warm start: the cached simplex is the active set at k = 0, and plain
-         * GJK directions take it from there (cache.c). */
-        if (in->warm_count > 0) {
-            count = agjk__warm_seed(in, f * shrunk, simplex, lambda, &x);
+         * GJK directions take it from there (cache.c). Only for problems of
+         * ordinary size, where x_0, its projection, is used as given. */
+        if (in->warm_count > 0 && x.x == in->x0.x && x.y == in->x0.y && x.z == in->x0.z) {
+            count = agjk__warm_seed(in, simplex, lambda, &x);
             have_x = 1;
+            warm = 1;
             warm_enclosed = count == 4;
             m.active = 0;
         }
@@ -227,7 +231,7 @@ void agjk__solve(agjk__minkowski *md, const agjk__solve_input *in, agjk__solve_o
     }
     for (int k = 0; k < in->max_iterations; ++k) {
         out->iterations = k + 1;
-        agjk_vec3 d = x;
+        agjk_vec3 d = k == 0 ? d0 : x;
         if (k > 0) {
             if (m.active) d = agjk__momentum_direction(&m, k, x);
             agjk__minkowski_support(md, d, &s);
@@ -235,10 +239,12 @@ void agjk__solve(agjk__minkowski *md, const agjk__solve_input *in, agjk__solve_o
             follow_rescale(md, simplex, count, &x, &m, &d);
         }
         if (support_ends_query(md, in, d, &s, out)) break;
-        /* Warm start: a support plane that cuts off a cached point (cache.c). */
-        if (in->warm_count > 0 && !agjk__warm_consistent(simplex, count, d, &s, noise_scale(md))) {
-            out->outcome = AGJK__WARM_REJECTED;
-            break;
+        /* Warm start: a support plane that cuts off a cached point proves the
+         * cache stale; go on cold from this support (cache.c). */
+        if (warm && !agjk__warm_consistent(simplex, count, d, &s, noise_scale(md))) {
+            count = 0;
+            have_x = 0;
+            warm = warm_enclosed = 0;
         }
         if (warm_enclosed) { out->outcome = AGJK__INTERSECTING; break; }
         /* Adaptive method: every support plane is a lower bound (direction.c). */

@@ -56,8 +56,7 @@ typedef enum agjk__outcome {
     AGJK__ITERATION_CAP,
     AGJK__STALLED,        /* no decrease of ||x|| in floating point */
     AGJK__AT_ROUNDING,    /* ||x|| below the rounding level: touching to rounding */
-    AGJK__BAD_SUPPORT,    /* a support callback returned a non-finite point */
-    AGJK__WARM_REJECTED   /* a support plane cut off a warm-start point: rerun cold */
+    AGJK__BAD_SUPPORT     /* a support callback returned a non-finite point */
 } agjk__outcome;
 
 typedef struct agjk__solve_input {
@@ -97,11 +96,11 @@ typedef struct agjk__solve_output {
 
 void agjk__solve(agjk__minkowski *md, const agjk__solve_input *in, agjk__solve_output *out);
 
-/* Warm start (cache.c). Puts in->warm, scaled by the power of two f, into
- * simplex[] as the active set with its weights and projection *x. Returns the
- * number of vertices kept; 4 when they enclose the origin (*x = 0). */
-int agjk__warm_seed(const agjk__solve_input *in, double f, agjk__vertex simplex[4],
-                    double lambda[4], agjk_vec3 *x);
+/* Warm start (cache.c). Puts in->warm into simplex[] as the active set with
+ * its weights and projection *x. Returns the number of vertices kept; 4 when
+ * they enclose the origin (*x = 0). */
+int agjk__warm_seed(const agjk__solve_input *in, agjk__vertex simplex[4], double lambda[4],
+                    agjk_vec3 *x);
 
 /* Warm start (cache.c): 0 when the plane of the support s found in direction d
  * cuts off a vertex of simplex[] (which is then not a point of D), else 1. */

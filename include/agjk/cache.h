@@ -17,9 +17,10 @@
  *
  * Answers stay certified whatever the cache holds:
  * - The cache records which pair filled it (the two support functions and data
- *   pointers, in order). For any other pair, and for a cache holding NaN, Inf,
- *   out-of-range values or a bad count (zeroed or garbage memory), it is ignored
- *   and the query runs cold.
+ *   pointers, in order) and a check value of its content. For any other pair,
+ *   and for a cache whose check value does not match, or holding NaN, Inf,
+ *   out-of-range values or a bad count (zeroed, garbage or edited memory), it
+ *   is ignored and the query runs cold.
  * - Every support found during the query is a plane that no point of the shapes
  *   crosses; a cached point on the wrong side of one is proof that the cache is
  *   stale, and the query restarts cold (its support calls are still counted).
@@ -70,6 +71,10 @@ typedef struct agjk_cache {
      *  the plane that certified the answer) in A's local frame, length units,
      *  and the one of the query before (zero if none). */
     agjk_vec3 direction, direction_prev;
+    /** Check value of the fields above, written by every cached query: a
+     *  cache whose content does not match it (garbage, or edited by hand) is
+     *  ignored. */
+    uint64_t check;
     /** Reserved for later versions; written as zero. */
     double reserved[4];
 } agjk_cache;
