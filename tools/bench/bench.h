@@ -50,4 +50,8 @@ extern const double wp_tolerances[WP_TOL_COUNT];
  * and tables.md into cfg->out_dir. Returns 0 or -1. */
 int bench_write_reports(const bench_report *r);
 
+/* Support calls per distance query, mean, per family and category: the four
+ * methods of the paper, their best, and the adaptive method (calls.c). */
+void bench_table_support_calls(FILE *f, const bench_report *r);
+
 #endif

@@ -7,8 +7,10 @@
 #   tools/fetch-meshes.sh      downloads the pybullet meshes; make bench then uses them
 
 BENCH_LIB_SRCS := rng.c problems.c nesmino.c solve.c evaluate.c stats.c guard.c \
-                  ccd_adapter.c ccd_bench.c mesh_io.c report.c coherent.c
+                  ccd_adapter.c ccd_bench.c mesh_io.c report.c
 BENCH_LIB_OBJS := $(BENCH_LIB_SRCS:%.c=$(OUT)/tools/bench/%.o)
+# The adaptive method's tables (support calls, coherent motion), linked with main.c.
+BENCH_ADAPTIVE_OBJS := $(OUT)/tools/bench/coherent.o $(OUT)/tools/bench/calls.o
 BENCH_LIB      := $(OUT)/tools/bench/libbench.a
 BENCH_BIN      := $(OUT)/tools/bench/agjk-bench
 # Hulls with hill-climbing adjacency come from tools/mesh (helper B's Qhull
@@ -37,8 +39,9 @@ $(OUT)/tools/bench/hull_support.o: tools/bench/hull_support.c $(BENCH_HDRS) $(HE
 	$(CC) $(ALL_CPPFLAGS) $(BENCH_MESH_CPPFLAGS) $(ALL_CFLAGS) -c $< -o $@
 
 $(BENCH_BIN): $(OUT)/tools/bench/main.o $(OUT)/tools/bench/hull_support.o $(BENCH_LIB) \
-              $(BENCH_MESH_LIB) $(OUT)/tests/common/libtestcommon.a $(LIB_A)
+              $(BENCH_ADAPTIVE_OBJS) $(BENCH_MESH_LIB) $(OUT)/tests/common/libtestcommon.a $(LIB_A)
 	$(CC) $(ALL_CFLAGS) -o $@ $(OUT)/tools/bench/main.o $(OUT)/tools/bench/hull_support.o \
+	    $(BENCH_ADAPTIVE_OBJS) \
 	    $(BENCH_LIB) $(BENCH_MESH_LIB) $(OUT)/tests/common/libtestcommon.a $(LIB_A) \
 	    $(BENCH_MESH_LIBS) $(BENCH_CCD_LIBS) -lm
 
