@@ -97,9 +97,11 @@ int agjk__cache_load(const agjk_cache *cache, const agjk_shape *a, const agjk_sh
     if (cache->count == 0 && !(last > 0.0)) return 0;
     if (!simplex || cache->count == 0 || in->method == AGJK_METHOD_FRANK_WOLFE) {
         /* A direction only (Frank-Wolfe's active set is its iterate alone). */
-        if (last > 0.0)
+        if (last > 0.0) {
             in->x0 = v3_scale(extrapolate(cache->direction, cache->direction_prev),
                               CACHE_DIRECTION_WEIGHT * last);
+            in->x0_given = 1;
+        }
         return 1;
     }
     agjk_vec3 w[4];

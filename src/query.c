@@ -83,6 +83,7 @@ static agjk_status run(const agjk_shape *a, const agjk_pose *pose_a, const agjk_
     in.tolerance = opts.tolerance;
     in.max_iterations = opts.max_iterations;
     in.x0 = initial_guess(&opts, pose_a, &md);
+    in.x0_given = opts.use_initial_direction != 0;
     in.warm_count = 0;
     if (cache) agjk__cache_load(cache, a, b, &md, &in); /* warm start (cache.c) */
 

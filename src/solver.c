@@ -177,7 +177,7 @@ void agjk__solve(agjk__minkowski *md, const agjk__solve_input *in, agjk__solve_o
     agjk_vec3 x = in->x0;
     int have_x = 0; /* x is a point of D (after the first projection) */
     agjk__momentum m;
-    agjk__momentum_init(&m, in->method, x);
+    agjk__momentum_init(&m, in->method, x, in->x0_given);
 
     out->outcome = AGJK__ITERATION_CAP;
     out->gap = INFINITY;
@@ -269,7 +269,10 @@ void agjk__solve(agjk__minkowski *md, const agjk__solve_input *in, agjk__solve_o
                 double scaled = in->tolerance * md->magnitude * md->magnitude;
                 if (scaled > fallback) fallback = scaled;
             }
-            if (m.active && (g <= fallback || k >= MOMENTUM_BUDGET)) {
+            /* (The adaptive method's plain steps, d = x, need no fallback: their
+             * g is a true gap, already tested by plane_stops.) */
+            if (m.active && (g <= fallback || k >= MOMENTUM_BUDGET) &&
+                !(m.method == AGJK_METHOD_ADAPTIVE && parallel(d, x))) {
                 /* Alg. 6 lines 5-7: the momentum direction makes no progress. */
                 if (parallel(d, x)) {
                     out->gap = g;

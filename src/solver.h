@@ -22,13 +22,15 @@ typedef struct agjk__momentum {
     agjk_vec3 d_best; /* direction of the best plane */
     agjk_vec3 a_prev, b_prev; /* points of A and B of the last support */
     int flat_seen;    /* a point of A or B came back bit for bit (any method) */
+    int plain_steps;  /* adaptive: iterations that may take plain steps when far */
 } agjk__momentum;
 
 /* Phases of the adaptive method; the other methods stay in AGJK__PHASE_FIXED. */
 enum { AGJK__PHASE_FIXED = 0, AGJK__PHASE_POLYAK, AGJK__PHASE_NESTEROV, AGJK__PHASE_FINAL };
 
-/* Prepares the policy for a query started at x_0. */
-void agjk__momentum_init(agjk__momentum *m, agjk_method method, agjk_vec3 x0);
+/* Prepares the policy for a query started at x_0; given: x_0 is a caller's or
+ * a cache's guess of x* (the adaptive method then trusts it from the start). */
+void agjk__momentum_init(agjk__momentum *m, agjk_method method, agjk_vec3 x0, int given);
 
 /* Support direction d_k for iterate x_k at iteration k while momentum is active. */
 agjk_vec3 agjk__momentum_direction(const agjk__momentum *m, int k, agjk_vec3 x);
@@ -67,6 +69,7 @@ typedef struct agjk__solve_input {
     double tolerance;
     int max_iterations;
     agjk_vec3 x0;       /* initial guess (A's frame), non-zero */
+    int x0_given;       /* x0 is a caller's or a cache's guess, not c_A - c_B */
     /* Warm start (cache.c): up to 4 points of D in A's frame, caller units,
      * whose projection is x0; warm_count 0 for a cold start. */
     int warm_count;
