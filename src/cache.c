@@ -192,8 +192,8 @@ void agjk__cache_save(agjk_cache *cache, const agjk_shape *a, const agjk_shape *
     cache->direction = x;
     /* The normal of the plane that certified x (or separated the shapes), when
      * it is not x's own, is the better estimate of x*'s direction (solver.c). */
-    if (v3_maxabs(out->direction) > 0.0)
-        cache->direction = v3_scale(v3_normalize(out->direction), length);
+    double dn = v3_norm(out->direction); /* solver units: in range, squares finite */
+    if (dn > 0.0) cache->direction = v3_scale(out->direction, length / dn);
     int n = out->count < 0 ? 0 : out->count > 4 ? 4 : out->count;
     for (int i = 0; i < n; ++i) {
         agjk_vec3 pa = v3_scale(out->simplex[i].a, inv);
