@@ -119,7 +119,7 @@ static void follow_rescale(epa_state *st) {
 /* The point of D farthest along n (a unit vector to rounding: a face normal
  * or a blow-up direction), and the upper bound it proves. */
 static int support(epa_state *st, agjk_vec3 n, agjk__vertex *s) {
-    agjk__minkowski_support(st->md, v3_neg(n), s, 1); /* argmin <-n, .> */
+    agjk__minkowski_support(st->md, v3_neg(n), s); /* argmin <-n, .> */
     ++st->support_calls;
     if (st->md->bad_support) return 0;
     follow_rescale(st);

@@ -78,10 +78,8 @@ static inline void agjk__minkowski_grow(agjk__minkowski *md, double magnitude) {
 }
 
 /* s = argmin_{s in D} <d, s> = S_A(-d) - S_B(d) (paper eq. 7-8), d in A's frame,
- * non-zero and finite. Writes s.a and s.b only when want_ab (witness points or
- * a caller that keeps the simplex's shape points). */
-static inline void agjk__minkowski_support(agjk__minkowski *md, agjk_vec3 d, agjk__vertex *out,
-                                           int want_ab) {
+ * non-zero and finite, with the points of A and B it came from. */
+static inline void agjk__minkowski_support(agjk__minkowski *md, agjk_vec3 d, agjk__vertex *out) {
     double dm = v3_maxabs(d);
     if (!(dm >= md->direction_min && dm <= AGJK__DIRECTION_MAX))
         d = agjk__minkowski_rescue_direction(md, d);
@@ -109,10 +107,8 @@ static inline void agjk__minkowski_support(agjk__minkowski *md, agjk_vec3 d, agj
     }
     agjk_vec3 b = v3_add(m3_mul(&md->rotation[0][0], pb), md->translation);
     out->w = v3_sub(pa, b);
-    if (want_ab) {
-        out->a = pa;
-        out->b = b;
-    }
+    out->a = pa;
+    out->b = b;
 }
 
 #endif

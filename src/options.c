@@ -10,7 +10,7 @@ void agjk_options_init_sized(agjk_options *options, size_t struct_size) {
     agjk_options o;
     memset(&o, 0, sizeof o);
     o.struct_size = (uint32_t)(struct_size < sizeof o ? struct_size : sizeof o);
-    o.method = AGJK_METHOD_NESTEROV;
+    o.method = AGJK_METHOD_ADAPTIVE;
     o.tolerance_mode = AGJK_TOLERANCE_ABSOLUTE;
     o.tolerance = 1e-8;
     o.max_iterations = 1000;

@@ -3,6 +3,7 @@
 #include <string.h>
 
 #include "agjk/query.h"
+#include "cache.h"
 #include "query_setup.h"
 
 static agjk_vec3 to_world(const agjk_pose *pose, agjk_vec3 p) {
@@ -11,7 +12,7 @@ static agjk_vec3 to_world(const agjk_pose *pose, agjk_vec3 p) {
 
 static agjk_status run(const agjk_shape *a, const agjk_pose *pose_a, const agjk_shape *b,
                        const agjk_pose *pose_b, const agjk_options *options,
-                       agjk_result *result, int boolean_mode) {
+                       agjk_result *result, int boolean_mode, agjk_cache *cache) {
     if (!result) return AGJK_STATUS_INVALID_INPUT;
     memset(result, 0, sizeof *result);
     result->momentum_stop_iteration = -1;
@@ -23,9 +24,16 @@ static agjk_status run(const agjk_shape *a, const agjk_pose *pose_a, const agjk_
         return result->status;
     in.boolean_mode = boolean_mode;
     in.want_witness = in.want_witness && !boolean_mode;
+    in.keep_points = in.want_witness || cache; /* the cache keeps the simplex */
+    in.track_flat = cache != NULL;
+    if (cache) agjk__cache_load(cache, a, b, &md, &in); /* warm start (cache.c) */
 
     agjk__solve_output out;
     agjk__solve(&md, &in, &out);
+    if (cache) {
+        if (out.outcome == AGJK__BAD_SUPPORT) agjk_cache_init(cache);
+        else agjk__cache_save(cache, a, b, &md, &out);
+    }
 
     result->iterations = out.iterations;
     result->support_calls = out.support_calls;
@@ -94,7 +102,10 @@ static agjk_status run(const agjk_shape *a, const agjk_pose *pose_a, const agjk_
                               : out.outcome == AGJK__STALLED      ? AGJK_STOP_NO_PROGRESS
                                                                   : AGJK_STOP_BELOW_PRECISION;
     result->gap = gap * inv * inv; /* a rounding-level negative gap is reported as 0 */
-    result->normal = m3_mul(&pose_a->rotation[0][0], n_local);
+    /* The normal is that of the plane that certified the lower bound: -x, or
+     * the support direction the adaptive method stopped on (solver.c). */
+    agjk_vec3 n_plane = v3_maxabs(out.direction) > 0.0 ? v3_normalize(v3_neg(out.direction)) : n_local;
+    result->normal = m3_mul(&pose_a->rotation[0][0], n_plane);
     if (!boolean_mode) {
         result->distance = distance * inv;
         result->bound = (distance - low) * inv;
@@ -111,11 +122,30 @@ static agjk_status run(const agjk_shape *a, const agjk_pose *pose_a, const agjk_
 agjk_status agjk_distance(const agjk_shape *a, const agjk_pose *pose_a, const agjk_shape *b,
                           const agjk_pose *pose_b, const agjk_options *options,
                           agjk_result *result) {
-    return run(a, pose_a, b, pose_b, options, result, 0);
+    return run(a, pose_a, b, pose_b, options, result, 0, NULL);
 }
 
 agjk_status agjk_collide(const agjk_shape *a, const agjk_pose *pose_a, const agjk_shape *b,
                          const agjk_pose *pose_b, const agjk_options *options,
                          agjk_result *result) {
-    return run(a, pose_a, b, pose_b, options, result, 1);
+    return run(a, pose_a, b, pose_b, options, result, 1, NULL);
+}
+
+/* The warm-started queries of agjk/cache.h. */
+agjk_status agjk_distance_cached(const agjk_shape *a, const agjk_pose *pose_a,
+                                 const agjk_shape *b, const agjk_pose *pose_b,
+                                 const agjk_options *options, agjk_cache *cache,
+                                 agjk_result *result) {
+    agjk_status status = run(a, pose_a, b, pose_b, options, result, 0, cache);
+    if (status == AGJK_STATUS_INVALID_INPUT && cache) agjk_cache_init(cache);
+    return status;
+}
+
+agjk_status agjk_collide_cached(const agjk_shape *a, const agjk_pose *pose_a,
+                                const agjk_shape *b, const agjk_pose *pose_b,
+                                const agjk_options *options, agjk_cache *cache,
+                                agjk_result *result) {
+    agjk_status status = run(a, pose_a, b, pose_b, options, result, 1, cache);
+    if (status == AGJK_STATUS_INVALID_INPUT && cache) agjk_cache_init(cache);
+    return status;
 }

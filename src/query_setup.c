@@ -23,7 +23,7 @@ static int read_options(const agjk_options *given, agjk_options *opts) {
     opts->struct_size = (uint32_t)sizeof *opts;
     switch (opts->method) {
     case AGJK_METHOD_GJK: case AGJK_METHOD_NESTEROV: case AGJK_METHOD_NESTEROV_NORMALIZED:
-    case AGJK_METHOD_POLYAK: case AGJK_METHOD_FRANK_WOLFE: break;
+    case AGJK_METHOD_POLYAK: case AGJK_METHOD_FRANK_WOLFE: case AGJK_METHOD_ADAPTIVE: break;
     default: return 0;
     }
     if (opts->tolerance_mode != AGJK_TOLERANCE_ABSOLUTE &&
@@ -69,5 +69,9 @@ int agjk__query_prepare(const agjk_shape *a, const agjk_pose *pose_a, const agjk
     in->tolerance = opts->tolerance;
     in->max_iterations = opts->max_iterations;
     in->x0 = initial_guess(opts, pose_a, md);
+    in->x0_given = opts->use_initial_direction != 0;
+    in->keep_points = in->want_witness;
+    in->track_flat = 0;
+    in->warm_count = 0;
     return 1;
 }

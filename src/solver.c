@@ -40,6 +40,7 @@ typedef struct solver {
     double x2;          /* ||x||^2 */
     agjk__momentum m;
     double abs_tolerance; /* absolute mode: the tolerance in solver units squared */
+    double lie_factor;    /* a gap below -lie_factor ||x|| noise proves a lying support */
 } solver;
 
 /* After a support that had to lower the scale (agjk__minkowski_rescue_points),
@@ -51,15 +52,14 @@ static AGJK__NOINLINE void follow_rescale(solver *sv, agjk_vec3 *d) {
     md->rescaled = 1.0;
     for (int i = 0; i < sv->count; ++i) {
         sv->w[i] = v3_scale(sv->w[i], f);
-        if (!sv->in->want_witness) continue;
+        if (!sv->in->keep_points) continue;
         sv->a[i] = v3_scale(sv->a[i], f);
         sv->b[i] = v3_scale(sv->b[i], f);
     }
     sv->x = v3_scale(sv->x, f);
     sv->x2 = v3_norm2(sv->x);
     *d = v3_scale(*d, f);
-    sv->m.d_prev = v3_scale(sv->m.d_prev, f);
-    sv->m.s_prev = v3_scale(sv->m.s_prev, f);
+    agjk__momentum_rescale(&sv->m, f);
     if (!sv->in->relative) sv->abs_tolerance *= f * f;
 }
 
@@ -67,7 +67,7 @@ static AGJK__NOINLINE void follow_rescale(solver *sv, agjk_vec3 *d) {
  * the loop's own call, out of line for the rare ones (momentum switch-off,
  * final certification), so that the support path is expanded once. */
 static inline void support(solver *sv, agjk_vec3 *d, agjk__vertex *s) {
-    agjk__minkowski_support(sv->md, *d, s, sv->in->want_witness);
+    agjk__minkowski_support(sv->md, *d, s);
     if (sv->md->rescaled != 1.0) follow_rescale(sv, d);
 }
 static AGJK__NOINLINE void support_rare(solver *sv, agjk_vec3 *d, agjk__vertex *s) { support(sv, d, s); }
@@ -156,7 +156,7 @@ static int momentum_stalls(const solver *sv, double g, int k) {
 static int update_simplex(solver *sv, const agjk__vertex *s, agjk_vec3 *x) {
     int n = sv->count;
     sv->w[n] = s->w;
-    if (sv->in->want_witness) {
+    if (sv->in->keep_points) {
         sv->a[n] = s->a;
         sv->b[n] = s->b;
     }
@@ -173,7 +173,7 @@ static int update_simplex(solver *sv, const agjk__vertex *s, agjk_vec3 *x) {
         if (!(mask & (1u << i))) continue;
         if (kept != i) {
             sv->w[kept] = sv->w[i];
-            if (sv->in->want_witness) {
+            if (sv->in->keep_points) {
                 sv->a[kept] = sv->a[i];
                 sv->b[kept] = sv->b[i];
             }
@@ -191,7 +191,7 @@ static int update_simplex(solver *sv, const agjk__vertex *s, agjk_vec3 *x) {
 static void update_frank_wolfe(solver *sv, const agjk__vertex *s, agjk_vec3 *x) {
     if (sv->count == 0) {
         sv->w[0] = s->w;
-        if (sv->in->want_witness) {
+        if (sv->in->keep_points) {
             sv->a[0] = s->a;
             sv->b[0] = s->b;
         }
@@ -199,7 +199,7 @@ static void update_frank_wolfe(solver *sv, const agjk__vertex *s, agjk_vec3 *x) 
         agjk_vec3 w[2] = {sv->w[0], s->w};
         double l[4];
         agjk__simplex_project_gjk(w, 2, l, x);
-        if (sv->in->want_witness) {
+        if (sv->in->keep_points) {
             sv->a[0] = v3_lerp2(sv->a[0], l[0], s->a, l[1]);
             sv->b[0] = v3_lerp2(sv->b[0], l[0], s->b, l[1]);
         }
@@ -215,6 +215,35 @@ static int parallel(agjk_vec3 d, agjk_vec3 x) {
     return v3_norm2(c) == 0.0 && v3_dot(d, x) > 0.0;
 }
 
+/* Whether g (< 0) proves a lying support: below -lie_factor ||x|| noise. */
+static int gap_lies(const solver *sv, double g) {
+    double lie = sv->lie_factor * sv->md->noise;
+    return g < 0.0 && g * g > lie * lie * sv->x2;
+}
+
+/* Adaptive method: stops at x (a point of D) when the best support plane met
+ * so far, in any direction, certifies it as the gap does (direction.c), or
+ * when that plane lies beyond x, which proves a lying support. Returns 1 with
+ * out->outcome set. */
+static int plane_stops(const solver *sv, agjk__solve_output *out) {
+    const agjk__momentum *m = &sv->m;
+    double n = sqrt(sv->x2);
+    /* 2 ||x|| (||x|| - plane) >= ||x||^2 - ||x*||^2 >= ||x - x*||^2 */
+    double gp = 2.0 * n * (n - m->plane);
+    if (gap_lies(sv, gp)) {
+        out->outcome = AGJK__BAD_SUPPORT; /* a plane beyond x, a point of D */
+        return 1;
+    }
+    /* A NaN gp (no plane yet at x = 0) fails every test: no stop. */
+    agjk__outcome v = gap_verdict(sv, gp, 0.0);
+    if (v == AGJK__ITERATION_CAP) return 0;
+    if (!parallel(m->d_best, sv->x)) out->direction = m->d_best;
+    out->gap = gp > 0.0 ? gp : 0.0;
+    out->gap_valid = 1;
+    out->outcome = v;
+    return 1;
+}
+
 /* The first support, in direction x_0 for every method (d_{-1} = s_{-1} = x_0
  * gives d_0 = x_0), also tells the problem's size: from then on the solver
  * works in units where it is about 1 (agjk__minkowski_set_scale). */
@@ -223,7 +252,7 @@ static void first_support(solver *sv, agjk__vertex *s, agjk__solve_output *out) 
     agjk_vec3 x = sv->in->x0;
     /* The problem's size is not known yet: give the callbacks a unit-size
      * direction (exact power-of-two scaling of x_0). */
-    agjk__minkowski_support(md, v3_scale_to_unit(x, v3_maxabs(x)), s, sv->in->want_witness);
+    agjk__minkowski_support(md, v3_scale_to_unit(x, v3_maxabs(x)), s);
     ++out->support_calls;
     /* A shrink during that first call already put s in new units; x_0, given
      * in the caller's units, needs it too. */
@@ -232,10 +261,8 @@ static void first_support(solver *sv, agjk__vertex *s, agjk__solve_output *out) 
     double f = agjk__minkowski_set_scale(md);
     if (f != 1.0) {
         s->w = v3_scale(s->w, f);
-        if (sv->in->want_witness) {
-            s->a = v3_scale(s->a, f);
-            s->b = v3_scale(s->b, f);
-        }
+        s->a = v3_scale(s->a, f);
+        s->b = v3_scale(s->b, f);
     }
     if (shrunk != 1.0 || f != 1.0) {
         agjk_vec3 x_units = v3_scale(v3_scale(x, shrunk), f);
@@ -247,7 +274,7 @@ static void first_support(solver *sv, agjk__vertex *s, agjk__solve_output *out) 
     }
     sv->x = x;
     sv->x2 = v3_norm2(x);
-    sv->m.d_prev = x;
+    sv->m.d_prev = x; /* d_{-1} = s_{-1} = x_0, in solver units */
     sv->m.s_prev = x;
     sv->abs_tolerance = sv->in->tolerance * md->scale * md->scale;
 }
@@ -259,10 +286,13 @@ void agjk__solve(agjk__minkowski *md, const agjk__solve_input *in, agjk__solve_o
     sv.count = 0;
     sv.lambda[0] = 1.0;
     sv.lambda[1] = sv.lambda[2] = sv.lambda[3] = 0.0;
-    sv.m.method = in->method;
-    sv.m.active = agjk__method_has_momentum(in->method);
+    agjk__momentum_init(&sv.m, in->method, in->x0, in->x0_given);
+    int adaptive = in->method == AGJK_METHOD_ADAPTIVE;
     int have_x = 0;      /* x is a point of D (after the first projection) */
     int stalled = 0;     /* consecutive iterations without progress */
+    int warm = 0, warm_enclosed = 0; /* cached points in the simplex (cache.c) */
+    /* Warm-started points carry a few more ulps from their frame changes. */
+    sv.lie_factor = in->warm_count > 0 ? 16.0 : 4.0;
 
     out->outcome = AGJK__ITERATION_CAP;
     out->gap = INFINITY;
@@ -274,18 +304,58 @@ void agjk__solve(agjk__minkowski *md, const agjk__solve_input *in, agjk__solve_o
 
     agjk__vertex s;
     first_support(&sv, &s, out);
+    agjk_vec3 d0 = sv.x; /* direction of the first support */
+    /* Warm start: the cached simplex is the active set at k = 0, and plain GJK
+     * directions take it from there (cache.c). Only for problems of ordinary
+     * size, where x_0, its projection, is used as given. */
+    if (in->warm_count > 0 && sv.x.x == in->x0.x && sv.x.y == in->x0.y && sv.x.z == in->x0.z) {
+        agjk__vertex seed[4];
+        sv.count = agjk__warm_seed(in, seed, sv.lambda, &sv.x);
+        for (int i = 0; i < sv.count; ++i) {
+            sv.w[i] = seed[i].w;
+            sv.a[i] = seed[i].a;
+            sv.b[i] = seed[i].b;
+        }
+        sv.x2 = v3_norm2(sv.x);
+        have_x = 1;
+        warm = 1;
+        warm_enclosed = sv.count == 4;
+        sv.m.active = 0;
+    }
     for (int k = 0; k < in->max_iterations; ++k) {
         out->iterations = k + 1;
-        agjk_vec3 d = sv.x;
+        agjk_vec3 d = k == 0 ? d0 : sv.x;
         if (k > 0) {
             if (sv.m.active) d = agjk__momentum_direction(&sv.m, k, sv.x);
             support(&sv, &d, &s);
             ++out->support_calls;
         }
         if (support_ends_query(&sv, d, &s, out)) break;
+        if (warm) {
+            /* A support plane that cuts off a cached point proves the cache
+             * stale: go on cold from this support (cache.c). */
+            if (!agjk__warm_consistent(sv.w, sv.count, d, &s, md->noise)) {
+                sv.count = 0;
+                have_x = 0;
+                warm = warm_enclosed = 0;
+            }
+            if (warm_enclosed) {
+                out->outcome = AGJK__INTERSECTING;
+                break;
+            }
+        }
+        /* Adaptive method: every support plane is a lower bound (direction.c),
+         * which may certify x as well as the gap does (no extra support in
+         * direction x_k once momentum has done its work). */
+        if (adaptive) {
+            agjk__momentum_plane(&sv.m, d, s.w, sv.x);
+            if (have_x && plane_stops(&sv, out)) break;
+        }
         if (have_x) {
             double g = 2.0 * v3_dot(sv.x, v3_sub(sv.x, s.w)); /* eq. 29 */
-            if (sv.m.active && momentum_stalls(&sv, g, k)) {
+            /* (The adaptive method's plain steps, d = x, need no fallback:
+             * their g is a true gap, tested by plane_stops already.) */
+            if (sv.m.active && momentum_stalls(&sv, g, k) && !(adaptive && parallel(d, sv.x))) {
                 /* Alg. 6 lines 5-7: the momentum direction makes no progress. */
                 if (parallel(d, sv.x)) {
                     out->gap = g;
@@ -300,13 +370,14 @@ void agjk__solve(agjk__minkowski *md, const agjk__solve_input *in, agjk__solve_o
                 support_rare(&sv, &d, &s);
                 ++out->support_calls;
                 if (support_ends_query(&sv, d, &s, out)) break;
+                if (adaptive) agjk__momentum_plane(&sv.m, d, s.w, sv.x);
                 g = 2.0 * v3_dot(sv.x, v3_sub(sv.x, s.w));
             }
             if (!sv.m.active) {
                 /* x is in D and s minimises <x, .> over D, so g >= 0 up to
                  * rounding. Clearly negative (below -4 ||x|| noise): the support
                  * function lies. */
-                if (g < 0.0 && g * g > 16.0 * sv.x2 * md->noise * md->noise) {
+                if (gap_lies(&sv, g)) {
                     out->outcome = AGJK__BAD_SUPPORT;
                     break;
                 }
@@ -366,8 +437,17 @@ void agjk__solve(agjk__minkowski *md, const agjk__solve_input *in, agjk__solve_o
         } else {
             stalled = 0;
         }
-        sv.m.d_prev = d;
-        sv.m.s_prev = s.w;
+        /* Adaptive method: the planes met so far may certify x_{k+1} already,
+         * before any support in its direction. */
+        if (adaptive && plane_stops(&sv, out)) break;
+        /* d_{k-1}, s_{k-1}; the adaptive method may switch phase here, and
+         * flat faces are recorded for the cache. */
+        if (adaptive || in->track_flat) {
+            if (agjk__momentum_update(&sv.m, k, d, &s)) out->momentum_stop = k;
+        } else {
+            sv.m.d_prev = d;
+            sv.m.s_prev = s.w;
+        }
     }
 
     /* Without a valid gap at the final iterate (cap, stall, or momentum still
@@ -399,11 +479,12 @@ void agjk__solve(agjk__minkowski *md, const agjk__solve_input *in, agjk__solve_o
     }
     out->a = a;
     out->b = b;
-    /* The final active set, for EPA (its a and b only with want_witness). */
+    /* The final active set, for EPA and the cache (a and b with keep_points). */
     for (int i = 0; i < sv.count; ++i) {
         out->simplex[i].w = sv.w[i];
-        out->simplex[i].a = in->want_witness ? sv.a[i] : v3(0.0, 0.0, 0.0);
-        out->simplex[i].b = in->want_witness ? sv.b[i] : v3(0.0, 0.0, 0.0);
+        out->simplex[i].a = in->keep_points ? sv.a[i] : v3(0.0, 0.0, 0.0);
+        out->simplex[i].b = in->keep_points ? sv.b[i] : v3(0.0, 0.0, 0.0);
     }
     out->simplex_count = sv.count;
+    out->flat = sv.m.flat_seen;
 }

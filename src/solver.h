@@ -6,16 +6,46 @@
 
 #include "minkowski.h"
 
-/* Direction policy state (Montaut et al. 2022, Alg. 6/7; GJK++ for Polyak). */
+/* Direction policy state (Montaut et al. 2022, Alg. 6/7; GJK++ for Polyak;
+ * the adaptive rule of direction.c). */
 typedef struct agjk__momentum {
     agjk_method method;
     int active;       /* momentum still in use (0 after the Alg. 6 fallback) */
     agjk_vec3 d_prev; /* d_{k-1} */
     agjk_vec3 s_prev; /* s_{k-1} */
+    /* AGJK_METHOD_ADAPTIVE only (see direction.c). */
+    int phase;        /* AGJK__PHASE_* */
+    double plane;     /* best lower bound max <d_i, s_i> / ||d_i|| on ||x*||, solver units */
+    double plane_before; /* plane before the last support */
+    double omega;     /* <d, s> / ||d|| of the last support */
+    agjk_vec3 x_k;    /* iterate at which the last support was asked */
+    agjk_vec3 d_best; /* direction of the best plane */
+    agjk_vec3 a_prev, b_prev; /* points of A and B of the last support */
+    int flat_seen;    /* a point of A or B came back bit for bit (any method) */
+    int plain_steps;  /* adaptive: iterations that may take plain steps when far */
 } agjk__momentum;
+
+/* Phases of the adaptive method; the other methods stay in AGJK__PHASE_FIXED. */
+enum { AGJK__PHASE_FIXED = 0, AGJK__PHASE_POLYAK, AGJK__PHASE_NESTEROV, AGJK__PHASE_FINAL };
+
+/* Prepares the policy for a query started at x_0; given: x_0 is a caller's or
+ * a cache's guess of x* (the adaptive method then trusts it from the start). */
+void agjk__momentum_init(agjk__momentum *m, agjk_method method, agjk_vec3 x0, int given);
 
 /* Support direction d_k for iterate x_k at iteration k while momentum is active. */
 agjk_vec3 agjk__momentum_direction(const agjk__momentum *m, int k, agjk_vec3 x);
+
+/* Adaptive method: records the support plane of s (a point of D) found in
+ * direction d at iterate x (before the stopping tests). */
+void agjk__momentum_plane(agjk__momentum *m, agjk_vec3 d, agjk_vec3 s, agjk_vec3 x);
+
+/* End of iteration k, which searched direction d and found s: keeps them as
+ * d_{k-1}, s_{k-1}, and lets the adaptive method switch phase. Returns 1 when
+ * the adaptive method switched momentum off for good. */
+int agjk__momentum_update(agjk__momentum *m, int k, agjk_vec3 d, const agjk__vertex *s);
+
+/* Multiplies the policy's stored vectors by the power of two f (rescaling). */
+void agjk__momentum_rescale(agjk__momentum *m, double f);
 
 /* Whether a method uses momentum at all. */
 int agjk__method_has_momentum(agjk_method method);
@@ -39,24 +69,52 @@ typedef struct agjk__solve_input {
     double tolerance;
     int max_iterations;
     agjk_vec3 x0;       /* initial guess (A's frame), non-zero */
+    int x0_given;       /* x0 is a caller's or a cache's guess, not c_A - c_B */
+    /* Keep the points of A and B of the active set (witness points, EPA, the
+     * cache); otherwise only the points of D move. */
+    int keep_points;
+    /* Record whether a point of A or B came back (flat faces; the cache keeps it). */
+    int track_flat;
+    /* Warm start (cache.c): up to 4 points of D in A's frame, caller units,
+     * whose projection is x0; warm_count 0 for a cold start. */
+    int warm_count;
+    agjk__vertex warm[4];
+    unsigned warm_mask;       /* their projection: support mask, weights, point */
+    double warm_lambda[4];
+    agjk_vec3 warm_x;
 } agjk__solve_input;
 
 typedef struct agjk__solve_output {
     agjk__outcome outcome;
     agjk_vec3 x;         /* final iterate (A's frame) */
     agjk_vec3 a, b;      /* core points on A and B with a - b = x (A's frame) */
-    agjk_vec3 direction; /* separating direction (SEPARATED_EARLY) */
+    agjk_vec3 direction; /* separating direction (SEPARATED_EARLY), or the normal of
+                            the support plane that certified x when it is not x
+                            itself (adaptive method), else zero */
     double gap;          /* duality gap at x; valid when gap_valid */
     int gap_valid;
     double noise;        /* floating-point error scale of w, length units */
     int iterations;
     int support_calls;
     int momentum_stop;
-    /* The final active set (A's frame, solver units): EPA starts from it. */
+    /* The final active set (A's frame, solver units; a and b only when
+     * keep_points): EPA starts from it, the cache keeps it. */
     agjk__vertex simplex[4];
     int simplex_count;
+    int flat;            /* a point of A or B came back (flat faces), for the cache */
 } agjk__solve_output;
 
 void agjk__solve(agjk__minkowski *md, const agjk__solve_input *in, agjk__solve_output *out);
+
+/* Warm start (cache.c). Puts in->warm into simplex[] as the active set with
+ * its weights and projection *x. Returns the number of vertices kept; 4 when
+ * they enclose the origin (*x = 0). */
+int agjk__warm_seed(const agjk__solve_input *in, agjk__vertex simplex[4], double lambda[4],
+                    agjk_vec3 *x);
+
+/* Warm start (cache.c): 0 when the plane of the support s found in direction d
+ * cuts off one of the points w[0..count-1] (then not points of D), else 1. */
+int agjk__warm_consistent(const agjk_vec3 *w, int count, agjk_vec3 d,
+                          const agjk__vertex *s, double noise);
 
 #endif

@@ -20,6 +20,7 @@ const char *agjk_method_name(agjk_method method) {
     case AGJK_METHOD_NESTEROV_NORMALIZED: return "nesterov-normalized";
     case AGJK_METHOD_POLYAK: return "polyak";
     case AGJK_METHOD_FRANK_WOLFE: return "fw";
+    case AGJK_METHOD_ADAPTIVE: return "adaptive";
     }
     return "unknown";
 }

@@ -15,5 +15,6 @@
 #include "agjk/query.h"
 #include "agjk/polytope.h"
 #include "agjk/penetration.h"
+#include "agjk/cache.h"
 
 #endif /* AGJK_AGJK_H */

@@ -88,7 +88,7 @@ AGJK_API agjk_status agjk_simplex_project_origin(const agjk_vec3 *vertices, int 
 AGJK_API const char *agjk_status_string(agjk_status status);
 
 /** A static string naming `method` ("gjk", "nesterov", "nesterov-normalized",
- *  "polyak", "fw"), or "unknown" for values not in agjk_method. Never NULL. */
+ *  "polyak", "fw", "adaptive"), or "unknown" for values not in agjk_method. Never NULL. */
 AGJK_API const char *agjk_method_name(agjk_method method);
 
 #ifdef __cplusplus

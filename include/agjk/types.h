@@ -92,7 +92,15 @@ typedef enum agjk_method {
     AGJK_METHOD_POLYAK = 3,
     /** Plain Frank-Wolfe with exact line search (Alg. 1): the active set is
      *  the current iterate only. Slow; kept as the reference of the family. */
-    AGJK_METHOD_FRANK_WOLFE = 4
+    AGJK_METHOD_FRANK_WOLFE = 4,
+    /** Adaptive (the default): Polyak momentum while the shapes are far apart
+     *  relative to the gap, Nesterov momentum (Alg. 6) once the best support
+     *  plane is below 0.9 ||x_k||, plain GJK directions from the first momentum
+     *  step that gives a worse support plane than the best so far (adaptive
+     *  restart), and a stop as soon as the best support plane met in any
+     *  direction certifies the tolerance (no extra support in direction x_k).
+     *  See the README for the rule and its measurements. */
+    AGJK_METHOD_ADAPTIVE = 5
 } agjk_method;
 
 /** How agjk_options::tolerance is read. */
@@ -167,7 +175,7 @@ typedef struct agjk_shape {
 typedef struct agjk_options {
     /** sizeof(agjk_options) as the caller compiled it; set by the init function. */
     uint32_t struct_size;
-    /** Direction policy. Default AGJK_METHOD_NESTEROV. */
+    /** Direction policy. Default AGJK_METHOD_ADAPTIVE (AGJK_METHOD_NESTEROV in 0.1). */
     agjk_method method;
     /** How `tolerance` is read. Default AGJK_TOLERANCE_ABSOLUTE. */
     agjk_tolerance_mode tolerance_mode;
@@ -212,9 +220,13 @@ typedef struct agjk_result {
     agjk_vec3 witness_a;
     /** Closest point on B, world frame (only with AGJK_COMPUTE_WITNESS). */
     agjk_vec3 witness_b;
-    /** Unit vector in world frame from A towards B: for agjk_distance, the
-     *  direction of witness_b - witness_a; for agjk_collide when separated, the
-     *  normal of the separating plane found. Zero when intersecting. */
+    /** Unit vector in world frame from A towards B, the normal of the support
+     *  plane that certified the answer: for agjk_distance, the direction of
+     *  witness_b - witness_a, except when AGJK_METHOD_ADAPTIVE stopped on the
+     *  plane of another support direction met on the way (the plane with this
+     *  normal then separates the shapes by at least distance - bound); for
+     *  agjk_collide when separated, the normal of the separating plane found.
+     *  Zero when intersecting. */
     agjk_vec3 normal;
     /** Iterations of the solver loop (each computes one or two supports). */
     int32_t iterations;

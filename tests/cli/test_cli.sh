@@ -138,7 +138,7 @@ distance_is "cube turned 45 deg about z" "3 - 0.5 - math.sqrt(0.5)" 1e-12 "$C" "
 distance_is "both cubes moved" 0.25 1e-12 "$C" "$C" --pose-a -10 5 1 1 0 0 0 --pose-b -8.75 5 1 1 0 0 0
 distance_is "scaled cube" 1.5 1e-12 "$C" "$C" --pose-b 3 0 0 1 0 0 0 --scale-b 2
 distance_is "scale in mm" 2000 1e-9 "$C" "$C" --pose-b 3000 0 0 1 0 0 0 --scale-a 1000 --scale-b 1000 --relative
-for m in gjk nesterov nesterov-normalized polyak fw; do
+for m in adaptive gjk nesterov nesterov-normalized polyak fw; do
     distance_is "method $m" 2 1e-6 "$C" "$C" --pose-b 3 0 0 1 0 0 0 --method "$m" --max-iterations 1000
 done
 distance_is "scan support" 2 1e-12 "$C" "$C" --pose-b 3 0 0 1 0 0 0 --scan

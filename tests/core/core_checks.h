@@ -9,9 +9,10 @@
 #include "check_main.h"
 #include "testutil.h"
 
-static const agjk_method core_methods[5] = {AGJK_METHOD_GJK, AGJK_METHOD_NESTEROV,
-                                            AGJK_METHOD_NESTEROV_NORMALIZED, AGJK_METHOD_POLYAK,
-                                            AGJK_METHOD_FRANK_WOLFE};
+#define CORE_METHOD_COUNT 6
+static const agjk_method core_methods[CORE_METHOD_COUNT] = {
+    AGJK_METHOD_GJK, AGJK_METHOD_NESTEROV, AGJK_METHOD_NESTEROV_NORMALIZED, AGJK_METHOD_POLYAK,
+    AGJK_METHOD_FRANK_WOLFE, AGJK_METHOD_ADAPTIVE};
 
 /* What is known of the true distance: it lies in [lo, hi], or the shapes
  * certainly overlap (then lo = hi = 0). */

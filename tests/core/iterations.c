@@ -13,8 +13,10 @@
 
 static const double distances[] = {-0.1, -0.01, -1e-3, -1e-4, 1e-4, 1e-3, 1e-2, 0.1, 0.5, 1.0, 5.0};
 #define N_DIST ((int)(sizeof distances / sizeof distances[0]))
-static const agjk_method methods[4] = {AGJK_METHOD_GJK, AGJK_METHOD_NESTEROV,
-                                       AGJK_METHOD_NESTEROV_NORMALIZED, AGJK_METHOD_POLYAK};
+#define N_METHODS 5
+static const agjk_method methods[N_METHODS] = {AGJK_METHOD_GJK, AGJK_METHOD_NESTEROV,
+                                               AGJK_METHOD_NESTEROV_NORMALIZED, AGJK_METHOD_POLYAK,
+                                               AGJK_METHOD_ADAPTIVE};
 
 int main(int argc, char **argv) {
     int pairs = argc > 1 ? atoi(argv[1]) : 1000;
@@ -24,13 +26,14 @@ int main(int argc, char **argv) {
     tu_rng_seed(&rng, seed);
     printf("# %d ellipsoid pairs per distance, seed %llu, absolute tolerance 1e-8, cap 1000\n", pairs,
            (unsigned long long)seed);
-    printf("# query     distance   gjk  nesterov  normalized  polyak   (mean iterations)\n");
-    double close_sum[2][4] = {{0}};
+    printf("# query     distance   gjk  nesterov  normalized  polyak  adaptive   (mean iterations;"
+           " support calls of adaptive)\n");
+    double close_sum[2][N_METHODS] = {{0}};
     int close_n = 0;
     for (int q = 0; q < 2; q++) {
         tu_rng_seed(&rng, seed);
         for (int k = 0; k < N_DIST; k++) {
-            double it_sum[4] = {0};
+            double it_sum[N_METHODS] = {0}, adaptive_calls = 0;
             for (int i = 0; i < pairs; i++) {
                 ref_shape a, b;
                 double sc = tu_paper_scale(&rng);
@@ -41,7 +44,7 @@ int main(int argc, char **argv) {
                 agjk_shape sa, sb;
                 ref_make_agjk(&a, &sa);
                 ref_make_agjk(&b, &sb);
-                for (int m = 0; m < 4; m++) {
+                for (int m = 0; m < N_METHODS; m++) {
                     agjk_options o = agjk_default_options();
                     o.method = methods[m];
                     o.max_iterations = 1000;
@@ -49,21 +52,22 @@ int main(int argc, char **argv) {
                     if (q == 0) agjk_distance(&sa, &pa, &sb, &pb, &o, &r);
                     else agjk_collide(&sa, &pa, &sb, &pb, &o, &r);
                     it_sum[m] += r.iterations;
+                    if (methods[m] == AGJK_METHOD_ADAPTIVE) adaptive_calls += r.support_calls;
                 }
             }
-            printf("%-9s %9.0e %6.2f %9.2f %11.2f %7.2f\n", q == 0 ? "distance" : "collide",
+            printf("%-9s %9.0e %6.2f %9.2f %11.2f %7.2f %9.2f (%.2f)\n", q == 0 ? "distance" : "collide",
                    distances[k], it_sum[0] / pairs, it_sum[1] / pairs, it_sum[2] / pairs,
-                   it_sum[3] / pairs);
+                   it_sum[3] / pairs, it_sum[4] / pairs, adaptive_calls / pairs);
             if (distances[k] > 0 && distances[k] <= 0.1) {
-                for (int m = 0; m < 4; m++) close_sum[q][m] += it_sum[m] / pairs;
+                for (int m = 0; m < N_METHODS; m++) close_sum[q][m] += it_sum[m] / pairs;
                 if (q == 0) close_n++;
             }
         }
     }
     for (int q = 0; q < 2; q++)
         printf("# close proximity (1e-4 .. 0.1), %s: mean iterations gjk %.2f, nesterov %.2f, "
-               "normalized %.2f, polyak %.2f (paper: ~16 and ~7)\n",
+               "normalized %.2f, polyak %.2f, adaptive %.2f (paper: ~16 and ~7)\n",
                q == 0 ? "distance" : "collide", close_sum[q][0] / close_n, close_sum[q][1] / close_n,
-               close_sum[q][2] / close_n, close_sum[q][3] / close_n);
+               close_sum[q][2] / close_n, close_sum[q][3] / close_n, close_sum[q][4] / close_n);
     return 0;
 }

@@ -142,7 +142,7 @@ static const char *kind_name[4] = {"sphere-sphere", "box-sphere", "box-box", "ca
 static void run_kind(int kind, agjk_tolerance_mode mode, double tol, uint64_t seed) {
     tu_rng rng;
     tu_rng_seed(&rng, seed);
-    int separated = 0, overlapping = 0, status_count[5][5] = {{0}};
+    int separated = 0, overlapping = 0, status_count[CORE_METHOD_COUNT][5] = {{0}};
     for (int i = 0; i < N_PAIRS; i++) {
         pair_case c;
         make_case(kind, i, &rng, &c);
@@ -150,7 +150,7 @@ static void run_kind(int kind, agjk_tolerance_mode mode, double tol, uint64_t se
         TU_CHECK_INT_EQ(ref_make_agjk(&c.a, &sa), AGJK_STATUS_OK);
         TU_CHECK_INT_EQ(ref_make_agjk(&c.b, &sb), AGJK_STATUS_OK);
         truth_interval t = truth_exact(c.truth, EPS);
-        for (int m = 0; m < 5; m++) {
+        for (int m = 0; m < CORE_METHOD_COUNT; m++) {
             agjk_options o = agjk_default_options();
             o.method = core_methods[m];
             o.tolerance_mode = mode;
@@ -190,7 +190,7 @@ static void run_kind(int kind, agjk_tolerance_mode mode, double tol, uint64_t se
     }
     printf("%-15s %s %g: sep/int/contact/not-conv per method:", kind_name[kind],
            mode == AGJK_TOLERANCE_RELATIVE ? "rel" : "abs", tol);
-    for (int m = 0; m < 5; m++)
+    for (int m = 0; m < CORE_METHOD_COUNT; m++)
         printf(" %s %d/%d/%d/%d", agjk_method_name(core_methods[m]), status_count[m][0],
                status_count[m][1], status_count[m][2], status_count[m][3]);
     printf("\n");

@@ -8,9 +8,9 @@
 #include "check_main.h"
 #include "testutil.h"
 
-static const agjk_method all_methods[5] = {AGJK_METHOD_GJK, AGJK_METHOD_NESTEROV,
+static const agjk_method all_methods[6] = {AGJK_METHOD_GJK, AGJK_METHOD_NESTEROV,
                                            AGJK_METHOD_NESTEROV_NORMALIZED, AGJK_METHOD_POLYAK,
-                                           AGJK_METHOD_FRANK_WOLFE};
+                                           AGJK_METHOD_FRANK_WOLFE, AGJK_METHOD_ADAPTIVE};
 
 START_TEST(version) {
     ck_assert_int_eq(agjk_version(), AGJK_VERSION_NUMBER);
@@ -29,7 +29,8 @@ START_TEST(strings) {
     ck_assert_str_eq(agjk_method_name(AGJK_METHOD_NESTEROV_NORMALIZED), "nesterov-normalized");
     ck_assert_str_eq(agjk_method_name(AGJK_METHOD_POLYAK), "polyak");
     ck_assert_str_eq(agjk_method_name(AGJK_METHOD_FRANK_WOLFE), "fw");
-    ck_assert_str_eq(agjk_method_name((agjk_method)5), "unknown");
+    ck_assert_str_eq(agjk_method_name(AGJK_METHOD_ADAPTIVE), "adaptive");
+    ck_assert_str_eq(agjk_method_name((agjk_method)6), "unknown");
     ck_assert_str_eq(agjk_method_name((agjk_method)-1), "unknown");
     ck_assert_str_eq(agjk_status_string(AGJK_STATUS_SEPARATED), "separated");
     const agjk_status known[6] = {AGJK_STATUS_SEPARATED, AGJK_STATUS_INTERSECTING,
@@ -51,7 +52,7 @@ START_TEST(option_defaults) {
     memset(&o, 0xab, sizeof o);
     agjk_options_init(&o);
     ck_assert_uint_eq(o.struct_size, sizeof o);
-    ck_assert_int_eq(o.method, AGJK_METHOD_NESTEROV);
+    ck_assert_int_eq(o.method, AGJK_METHOD_ADAPTIVE);
     ck_assert_int_eq(o.tolerance_mode, AGJK_TOLERANCE_ABSOLUTE);
     ck_assert(o.tolerance == 1e-8);
     ck_assert_int_eq(o.max_iterations, 1000);
@@ -185,7 +186,7 @@ START_TEST(bad_input) {
     good_case(&c); c.opt.max_iterations = -5; expect_invalid(&c, "max_iterations < 0");
     good_case(&c); c.opt.tolerance = 0.0; expect_invalid(&c, "tolerance 0");
     good_case(&c); c.opt.tolerance = -1e-8; expect_invalid(&c, "tolerance < 0");
-    good_case(&c); c.opt.method = (agjk_method)5; expect_invalid(&c, "unknown method 5");
+    good_case(&c); c.opt.method = (agjk_method)6; expect_invalid(&c, "unknown method 6");
     good_case(&c); c.opt.method = (agjk_method)-1; expect_invalid(&c, "unknown method -1");
     good_case(&c); c.opt.tolerance_mode = (agjk_tolerance_mode)2; expect_invalid(&c, "unknown tolerance mode");
     good_case(&c); c.opt.use_initial_direction = 1; c.opt.initial_direction = tu_vec(0, 0, 0);
@@ -218,7 +219,7 @@ START_TEST(good_results_are_clean) {
     ck_assert_int_eq(agjk_shape_sphere(&b, 0.5), AGJK_STATUS_OK);
     agjk_pose pa = tu_pose_identity(), pb = tu_pose_identity();
     pb.translation = tu_vec(3.0, 0.0, 0.0);
-    for (int m = 0; m < 5; m++) {
+    for (int m = 0; m < 6; m++) {
         agjk_options o = agjk_default_options();
         o.method = all_methods[m];
         agjk_result r;

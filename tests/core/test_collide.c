@@ -48,7 +48,7 @@ static long double posed_support(const ref_shape *s, const agjk_pose *p, agjk_ve
 
 typedef struct tally {
     int wrong, contact, contact_disallowed, not_converged, decided, queries, skipped;
-    int nc_by_method[5], nc_max_iterations, contact_deep_overlap[5];
+    int nc_by_method[CORE_METHOD_COUNT], nc_max_iterations, contact_deep_overlap[CORE_METHOD_COUNT];
     char first_wrong[300], first_contact[300];
 } tally;
 
@@ -85,7 +85,7 @@ static void run_target(tu_rng *rng, double target, agjk_tolerance_mode mode, dou
         agjk_shape sa, sb;
         TU_CHECK_INT_EQ(ref_make_agjk(&a, &sa), AGJK_STATUS_OK);
         TU_CHECK_INT_EQ(ref_make_agjk(&b, &sb), AGJK_STATUS_OK);
-        for (int m = 0; m < 5; m++) {
+        for (int m = 0; m < CORE_METHOD_COUNT; m++) {
             agjk_options o = agjk_default_options();
             o.method = core_methods[m];
             o.tolerance_mode = mode;

@@ -25,7 +25,7 @@ static const double targets[] = {-0.1, -1e-2, -1e-3, -1e-4, 1e-4, 1e-3, 1e-2, 0.
 static const agjk_polytope *adjacency_a, *adjacency_b;
 
 typedef struct tally {
-    int status[5][5];
+    int status[CORE_METHOD_COUNT][5];
     int pairs, skipped;
     int rel_violations; /* relative-mode promise broken (see report()) */
     double rel_worst;
@@ -50,7 +50,7 @@ static void run_pair(ref_shape *a, const agjk_pose *pa, ref_shape *b, const agjk
     if (adjacency_a != NULL) TU_CHECK_INT_EQ(agjk_shape_polytope(&sa, adjacency_a), AGJK_STATUS_OK);
     if (adjacency_b != NULL) TU_CHECK_INT_EQ(agjk_shape_polytope(&sb, adjacency_b), AGJK_STATUS_OK);
     for (int mode = 0; mode < 2; mode++) {
-        for (int m = 0; m < 5; m++) {
+        for (int m = 0; m < CORE_METHOD_COUNT; m++) {
             agjk_options o = agjk_default_options();
             o.method = core_methods[m];
             if (mode == 1) {
@@ -125,7 +125,7 @@ static void run_pair(ref_shape *a, const agjk_pose *pa, ref_shape *b, const agjk
 static void report(const char *what, const tally *tl) {
     printf("%s: %d pairs (%d skipped: reference not certified); statuses at abs 1e-8 "
            "(sep/int/contact/not-conv):", what, tl->pairs, tl->skipped);
-    for (int m = 0; m < 5; m++)
+    for (int m = 0; m < CORE_METHOD_COUNT; m++)
         printf(" %s %d/%d/%d/%d", agjk_method_name(core_methods[m]), tl->status[m][0],
                tl->status[m][1], tl->status[m][2], tl->status[m][3]);
     printf("\n");

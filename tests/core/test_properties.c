@@ -89,7 +89,7 @@ START_TEST(symmetry) {
     for (int i = 0; i < N_PAIRS; i++) {
         random_scene(&rng, &sc, i);
         double eps = 1e-12 * sc.size;
-        for (int m = 0; m < 5; m++) {
+        for (int m = 0; m < CORE_METHOD_COUNT; m++) {
             agjk_options o = options_for(m);
             agjk_result ab = query(&sc, 0, &sc.pa, &sc.pb, &o), ba = query(&sc, 1, &sc.pa, &sc.pb, &o);
             expect_same_distance(&ab, &ba, 1.0, eps, "symmetry", i, m);
@@ -119,7 +119,7 @@ START_TEST(rigid_motion) {
         agjk_pose qa = tu_pose_compose(&motion, &sc.pa), qb = tu_pose_compose(&motion, &sc.pb);
         /* a translation of 1e3 costs ~1e3 ulps of absolute precision */
         double eps = 1e-12 * (sc.size + tu_norm(motion.translation));
-        for (int m = 0; m < 5; m++) {
+        for (int m = 0; m < CORE_METHOD_COUNT; m++) {
             agjk_options o = options_for(m);
             agjk_result r1 = query(&sc, 0, &sc.pa, &sc.pb, &o), r2 = query(&sc, 0, &qa, &qb, &o);
             expect_same_distance(&r1, &r2, 1.0, eps, "rigid motion", i, m);
@@ -166,7 +166,7 @@ START_TEST(scaling) {
         double s = factors[i % 4];
         scale_scene(&sc, &scaled, s);
         double eps = 1e-12 * scaled.size;
-        for (int m = 0; m < 5; m++) {
+        for (int m = 0; m < CORE_METHOD_COUNT; m++) {
             agjk_options o = options_for(m);
             agjk_result r1 = query(&sc, 0, &sc.pa, &sc.pb, &o);
             agjk_result r2 = query(&scaled, 0, &scaled.pa, &scaled.pb, &o);
@@ -189,7 +189,7 @@ START_TEST(power_of_two_scaling_is_exact) {
         random_scene(&rng, &sc, i);
         double s = i % 2 ? 0x1p-20 : 0x1p20;
         scale_scene(&sc, &scaled, s);
-        for (int m = 0; m < 5; m++) {
+        for (int m = 0; m < CORE_METHOD_COUNT; m++) {
             agjk_options o = options_for(m);
             /* Plain FW on an overlap shrinks x geometrically towards 0 for
              * hundreds of iterations, into the subnormal range (|x| ~ 1e-168

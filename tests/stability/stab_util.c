@@ -347,7 +347,7 @@ static long double plane_gap(const ref_shape *a, const agjk_pose *pa, const ref_
 
 static const agjk_method all_methods[] = {AGJK_METHOD_GJK, AGJK_METHOD_NESTEROV,
                                           AGJK_METHOD_NESTEROV_NORMALIZED, AGJK_METHOD_POLYAK,
-                                          AGJK_METHOD_FRANK_WOLFE};
+                                          AGJK_METHOD_FRANK_WOLFE, AGJK_METHOD_ADAPTIVE};
 
 static void note_failure(stab_stats *st) { st->failures++; }
 

@@ -400,7 +400,7 @@ START_TEST(test_query_null_and_options) {
         run_queries("max_iterations 1", &g_sa, &g_pa, &g_sb, &g_pb, &o, VALID);
     }
     {
-        const int bad_method[] = {-1, 5, 1000, INT_MIN};
+        const int bad_method[] = {-1, 6, 1000, INT_MIN};
         for (size_t i = 0; i < 4; i++) {
             char what[64];
             o = agjk_default_options();
@@ -550,7 +550,7 @@ START_TEST(test_hostile_support) {
             int expected = mode <= 1 && after == 0 ? INVALID : ANY;
             if ((mode == 2 || mode == 3) && after == 0) expected = BEYOND;
             snprintf(what, sizeof what, "hostile support mode %d after %d", mode, after);
-            for (int m = 0; m < 5; m++) {
+            for (int m = 0; m <= AGJK_METHOD_ADAPTIVE; m++) {
                 o.method = (agjk_method)m;
                 o.max_iterations = 64;
                 run_queries(what, &hs, &g_pa, &g_sb, &g_pb, &o, expected);
@@ -658,7 +658,7 @@ START_TEST(test_mixed_magnitudes) {
         pose.translation.x = pose.translation.y = pose.translation.z = -62353515625;
         ck_assert_int_eq(agjk_shape_point(&pt), AGJK_STATUS_OK);
         ck_assert_int_eq(agjk_shape_polytope(&poly, &p), AGJK_STATUS_OK);
-        for (int m = 0; m < 5; m++) {
+        for (int m = 0; m <= AGJK_METHOD_ADAPTIVE; m++) {
             o.method = (agjk_method)m;
             run_queries("fuzzer's point vs denormal/huge polytope", &pt, &pose, &poly, &pose, &o,
                         VALID);
@@ -680,7 +680,7 @@ START_TEST(test_mixed_magnitudes) {
                 stab_pose_identity(&pa);
                 stab_pose_identity(&pb);
                 snprintf(what, sizeof what, "tiny %g big %g order %d", tiny[i], big[j], order);
-                for (int m = 0; m < 5; m++) {
+                for (int m = 0; m <= AGJK_METHOD_ADAPTIVE; m++) {
                     o.method = (agjk_method)m;
                     run_queries(what, &pt, &pa, &poly, &pb, &o, VALID);
                     run_queries(what, &sph, &pa, &poly, &pb, &o, VALID);
@@ -724,7 +724,7 @@ START_TEST(test_denormal_shift_concentric) {
         memcpy(pb.rotation, rb, sizeof rb);
         for (int k = 0; k < 2; k++) {
             pa.translation.z = k ? 5.4323092096489346e-312 : 0.0;
-            for (int m = 0; m < 5; m++) {
+            for (int m = 0; m <= AGJK_METHOD_ADAPTIVE; m++) {
                 agjk_options o = agjk_default_options();
                 o.method = (agjk_method)m;
                 ck_assert_msg(agjk_collide(&sc, &pa, &sb, &pb, &o, &r) != AGJK_STATUS_SEPARATED,
@@ -765,7 +765,7 @@ START_TEST(test_tiny_concentric) {
             memcpy(pb.rotation, rb, sizeof rb);
         }
         pa.translation.z = 7.988568138838989e-315;
-        for (int m = 0; m < 5; m++) {
+        for (int m = 0; m <= AGJK_METHOD_ADAPTIVE; m++) {
             agjk_options o = agjk_default_options();
             o.method = (agjk_method)m;
             ck_assert_msg(agjk_collide(&sc, &pa, &se, &pb, &o, &r) != AGJK_STATUS_SEPARATED,
@@ -779,7 +779,7 @@ START_TEST(test_tiny_concentric) {
     const double shift[] = {0.0, 8e-315, 5e-312, 1e-300};
     for (size_t i = 0; i < sizeof tiny / sizeof tiny[0]; i++)
         for (size_t k = 0; k < sizeof shift / sizeof shift[0]; k++)
-            for (int m = 0; m < 5; m++) {
+            for (int m = 0; m <= AGJK_METHOD_ADAPTIVE; m++) {
                 agjk_cone cone = {212860107.421875, tiny[i]};
                 agjk_ellipsoid ell = {{3258056640.625, 9.95e-08, tiny[i]}};
                 agjk_cone seg = {0, tiny[i]};
@@ -843,7 +843,7 @@ START_TEST(test_denormal_translation_plane) {
     b.p[2] = 445861816.40625;
     ck_assert_int_eq(stab_make_shape(&a, &sa), AGJK_STATUS_OK);
     ck_assert_int_eq(stab_make_shape(&b, &sb), AGJK_STATUS_OK);
-    for (int m = 0; m < 5; m++) {
+    for (int m = 0; m <= AGJK_METHOD_ADAPTIVE; m++) {
         agjk_options o = agjk_default_options();
         agjk_result r;
         o.method = (agjk_method)m;

@@ -19,6 +19,7 @@ typedef struct bench_config {
     int wp_pairs, wp_reps, ccd_reps;
     int coal_reps;             /* agjk vs Coal (coal_bench.h); 0 disables it */
     int depth_reps;            /* penetration-depth comparison (depth_bench.h); 0 disables */
+    int coherent_pairs, coherent_steps, coherent_reps; /* coherent.c; pairs 0: off */
     double tolerance, mesh_scale, nesmino_mu;
     int quick, no_ccd, no_wp, relative, scan_support;
     const char *out_dir, *mesh_dir, *raw_path, *command_line;
@@ -50,5 +51,9 @@ extern const double wp_tolerances[WP_TOL_COUNT];
 /* Writes summary.csv, work-precision.csv/.gp, libccd.csv, iterations.csv/.gp
  * and tables.md into cfg->out_dir. Returns 0 or -1. */
 int bench_write_reports(const bench_report *r);
+
+/* Support calls per distance query, mean, per family and category: the four
+ * methods of the paper, their best, and the adaptive method (calls.c). */
+void bench_table_support_calls(FILE *f, const bench_report *r);
 
 #endif

@@ -9,6 +9,8 @@
 BENCH_LIB_SRCS := rng.c problems.c nesmino.c solve.c evaluate.c stats.c guard.c \
                   ccd_adapter.c ccd_bench.c mesh_io.c report.c
 BENCH_LIB_OBJS := $(BENCH_LIB_SRCS:%.c=$(OUT)/tools/bench/%.o)
+# The adaptive method's tables (support calls, coherent motion), linked with main.c.
+BENCH_ADAPTIVE_OBJS := $(OUT)/tools/bench/coherent.o $(OUT)/tools/bench/calls.o
 BENCH_LIB      := $(OUT)/tools/bench/libbench.a
 BENCH_BIN      := $(OUT)/tools/bench/agjk-bench
 # Hulls with hill-climbing adjacency come from tools/mesh (the Qhull
@@ -37,10 +39,11 @@ $(OUT)/tools/bench/hull_support.o: tools/bench/hull_support.c $(BENCH_HDRS) $(HE
 	$(CC) $(ALL_CPPFLAGS) $(BENCH_MESH_CPPFLAGS) $(ALL_CFLAGS) -c $< -o $@
 
 $(BENCH_BIN): $(OUT)/tools/bench/main.o $(OUT)/tools/bench/hull_support.o \
-              $(OUT)/tools/bench/depth_bench.o $(BENCH_LIB) \
+              $(OUT)/tools/bench/depth_bench.o $(BENCH_ADAPTIVE_OBJS) $(BENCH_LIB) \
               $(BENCH_MESH_LIB) $(OUT)/tests/common/libtestcommon.a $(LIB_A)
 	$(or $(BENCH_LD),$(CC)) $(ALL_CFLAGS) -o $@ $(OUT)/tools/bench/main.o \
-	    $(OUT)/tools/bench/hull_support.o $(OUT)/tools/bench/depth_bench.o $(BENCH_EXTRA_OBJS) \
+	    $(OUT)/tools/bench/hull_support.o $(OUT)/tools/bench/depth_bench.o $(BENCH_ADAPTIVE_OBJS) \
+	    $(BENCH_EXTRA_OBJS) \
 	    $(BENCH_LIB) $(BENCH_MESH_LIB) $(OUT)/tests/common/libtestcommon.a $(LIB_A) \
 	    $(BENCH_MESH_LIBS) $(BENCH_CCD_LIBS) $(BENCH_EXTRA_LIBS) -lm
 

@@ -11,6 +11,7 @@
 #include "ccd_adapter.h"
 #include "coal_bench.h"
 #include "depth_bench.h"
+#include "coherent.h"
 #include "guard.h"
 #include "hull_support.h"
 #include "mesh_io.h"
@@ -38,6 +39,9 @@ static void usage(FILE *f) {
         "                    needs a build with Coal: tools/fetch-coal.sh)\n"
         "  --depth-reps R    repetitions in the penetration-depth comparison with libccd\n"
         "                    (default 20; 0 disables it)\n"
+        "  --coherent-pairs K  pairs per family moved along smooth trajectories, queried\n"
+        "                    cold, with hint + direction, and with agjk_cache (default 20;\n"
+        "                    0 disables); --coherent-steps T (200), --coherent-reps R (10)\n"
         "  --tolerance T     duality-gap tolerance of the tables (default 1e-8)\n"
         "  --relative        read tolerances as relative (AGJK_TOLERANCE_RELATIVE: g <= T ||x||^2)\n"
         "                    for agjk's methods; default absolute, as in the paper\n"
@@ -70,6 +74,9 @@ static int parse(int argc, char **argv, bench_config *c) {
     c->ccd_reps = 50;
     c->coal_reps = 100;
     c->depth_reps = 20;
+    c->coherent_pairs = 20;
+    c->coherent_steps = 200;
+    c->coherent_reps = 10;
     c->max_meshes = 1000;
     c->tolerance = 1e-8;
     c->mesh_scale = 0.1;
@@ -91,6 +98,9 @@ static int parse(int argc, char **argv, bench_config *c) {
         INT_OPT("--coal-reps", coal_reps)
         INT_OPT("--depth-reps", depth_reps)
         INT_OPT("--max-meshes", max_meshes)
+        INT_OPT("--coherent-pairs", coherent_pairs)
+        INT_OPT("--coherent-steps", coherent_steps)
+        INT_OPT("--coherent-reps", coherent_reps)
 #undef INT_OPT
         if (strcmp(a, "--relative") == 0) { c->relative = 1; continue; }
         if (strcmp(a, "--scan-support") == 0) { c->scan_support = 1; continue; }
@@ -115,6 +125,9 @@ static int parse(int argc, char **argv, bench_config *c) {
             c->coal_reps = 10;
             c->depth_reps = 3;
             c->max_meshes = 100;
+            c->coherent_pairs = 4;
+            c->coherent_steps = 100;
+            c->coherent_reps = 3;
             continue;
         }
         if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) { usage(stdout); exit(0); }
@@ -273,7 +286,7 @@ int main(int argc, char **argv) {
     ccd_bench_record *ccd_recs = NULL;
     unsigned char *ccd_outcome = NULL;
     coal_bench_data *coal;
-    int h, cap_problems, cap_shapes, depth_missed = 0;
+    int h, cap_problems, cap_shapes, depth_missed = 0, coherent_bad = 0;
     double t0, t_all = bench_now_ns();
     static char command[1024];
     char mesh_note[256] = "";
@@ -408,6 +421,24 @@ int main(int argc, char **argv) {
     if (bench_write_reports(&rep) != 0) return 2;
     if (coal_bench_write(&rep, coal) != 0) return 2;
     coal_bench_free(coal);
+    {
+        /* The adaptive method against the paper's four (calls.c). */
+        char path[1024];
+        FILE *md;
+        snprintf(path, sizeof path, "%s/tables.md", cfg.out_dir);
+        md = fopen(path, "a");
+        if (md) {
+            bench_table_support_calls(md, &rep);
+            fclose(md);
+        }
+        bench_table_support_calls(stderr, &rep);
+    }
+    if (cfg.coherent_pairs > 0 && cfg.coherent_steps > 0 && cfg.coherent_reps > 0) {
+        fprintf(stderr, "agjk-bench: coherent motion (%d pairs x %d steps, R = %d)\n",
+                cfg.coherent_pairs, cfg.coherent_steps, cfg.coherent_reps);
+        coherent_bad = bench_coherent_run(&cfg, &set, cfg.coherent_pairs, cfg.coherent_steps,
+                                          cfg.coherent_reps);
+    }
     if (cfg.raw_path) write_raw(cfg.raw_path, &set, recs, rep.rec_count);
     {
         /* Exit status: non-zero if any result lies outside its certified bound. */
@@ -424,6 +455,6 @@ int main(int argc, char **argv) {
         free(ccd_outcome);
         bench_free_meshes(&meshes);
         bench_set_free(&set);
-        return viol || wrong || depth_missed ? 1 : 0;
+        return viol || wrong || depth_missed || coherent_bad ? 1 : 0;
     }
 }

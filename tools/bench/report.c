@@ -17,7 +17,9 @@ static FILE *open_out(const bench_config *c, const char *name) {
     return f;
 }
 
-static const int fast_methods[4] = {BM_GJK, BM_NESTEROV, BM_NESTEROV_NORMALIZED, BM_POLYAK};
+#define FAST_COUNT 5
+static const int fast_methods[FAST_COUNT] = {BM_GJK, BM_NESTEROV, BM_NESTEROV_NORMALIZED,
+                                             BM_POLYAK, BM_ADAPTIVE};
 
 static bench_stats stats_of(const bench_report *r, int family, int category, int target,
                             int method, int mode, int tag, int near) {
@@ -72,12 +74,14 @@ static void table_methods(FILE *f, const bench_report *r, int family, int mode, 
 static void table_headline(FILE *f, const bench_report *r, int family) {
     int c, m, mode;
     fprintf(f, "| mode | category |");
-    for (m = 0; m < 4; ++m) fprintf(f, " %s |", bench_method_name(fast_methods[m]));
-    fprintf(f, "\n|---|---|---|---|---|---|\n");
+    for (m = 0; m < FAST_COUNT; ++m) fprintf(f, " %s |", bench_method_name(fast_methods[m]));
+    fprintf(f, "\n|---|---|");
+    for (m = 0; m < FAST_COUNT; ++m) fprintf(f, "---|");
+    fprintf(f, "\n");
     for (mode = 0; mode < 2; ++mode)
         for (c = 0; c < BENCH_CATEGORY_COUNT; ++c) {
             fprintf(f, "| %s | %s |", mode ? "Boolean" : "distance", bench_category_name(c));
-            for (m = 0; m < 4; ++m) {
+            for (m = 0; m < FAST_COUNT; ++m) {
                 bench_stats s = stats_of(r, family, c, -1, fast_methods[m], mode, -1, 0);
                 fprintf(f, " %.0f |", s.ns_median);
             }
@@ -91,12 +95,14 @@ static void table_hulls(FILE *f, const bench_report *r) {
     static const int sizes[4] = {33, 141, 626, 2500};
     int h, m, mode;
     fprintf(f, "| N | mode |");
-    for (m = 0; m < 4; ++m) fprintf(f, " %s us | it |", bench_method_name(fast_methods[m]));
-    fprintf(f, "\n|---|---|---|---|---|---|---|---|---|---|\n");
+    for (m = 0; m < FAST_COUNT; ++m) fprintf(f, " %s us | it |", bench_method_name(fast_methods[m]));
+    fprintf(f, "\n|---|---|");
+    for (m = 0; m < FAST_COUNT; ++m) fprintf(f, "---|---|");
+    fprintf(f, "\n");
     for (h = 0; h < 4; ++h)
         for (mode = 0; mode < 2; ++mode) {
             fprintf(f, "| %d | %s |", sizes[h], mode ? "Boolean" : "distance");
-            for (m = 0; m < 4; ++m) {
+            for (m = 0; m < FAST_COUNT; ++m) {
                 bench_stats s = stats_of(r, BENCH_HULLS, -1, -1, fast_methods[m], mode,
                                          sizes[h], 1);
                 pm(f, s.us_mean, s.us_std, s.n);

@@ -8,7 +8,7 @@
 
 const char *bench_method_name(int m) {
     static const char *const names[BM_COUNT] = {"FW", "NESMINO", "GJK", "Nesterov",
-                                                 "Nesterov-normalized", "Polyak"};
+                                                 "Nesterov-normalized", "Polyak", "Adaptive"};
     return m >= 0 && m < BM_COUNT ? names[m] : "unknown";
 }
 
@@ -39,6 +39,7 @@ static agjk_method agjk_method_of(int m) {
     case BM_NESTEROV: return AGJK_METHOD_NESTEROV;
     case BM_NESTEROV_NORMALIZED: return AGJK_METHOD_NESTEROV_NORMALIZED;
     case BM_POLYAK: return AGJK_METHOD_POLYAK;
+    case BM_ADAPTIVE: return AGJK_METHOD_ADAPTIVE;
     default: return AGJK_METHOD_GJK;
     }
 }

@@ -8,7 +8,7 @@
 
 typedef enum bench_method {
     BM_FW = 0, BM_NESMINO, BM_GJK, BM_NESTEROV, BM_NESTEROV_NORMALIZED, BM_POLYAK,
-    BM_COUNT
+    BM_ADAPTIVE, BM_COUNT
 } bench_method;
 
 typedef enum bench_mode { BENCH_DISTANCE = 0, BENCH_BOOLEAN = 1 } bench_mode;

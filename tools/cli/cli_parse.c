@@ -122,7 +122,7 @@ static int parse_pose(char **values, const char *option, agjk_pose *pose) {
 static int parse_method(const char *s, agjk_method *m) {
     static const agjk_method all[] = {AGJK_METHOD_GJK, AGJK_METHOD_NESTEROV,
                                       AGJK_METHOD_NESTEROV_NORMALIZED, AGJK_METHOD_POLYAK,
-                                      AGJK_METHOD_FRANK_WOLFE};
+                                      AGJK_METHOD_FRANK_WOLFE, AGJK_METHOD_ADAPTIVE};
     for (size_t i = 0; s && i < sizeof all / sizeof all[0]; i++)
         if (strcmp(s, agjk_method_name(all[i])) == 0) {
             *m = all[i];

@@ -1,0 +1,210 @@
+/* SPDX-License-Identifier: MIT */
+/* Warm start for coherent queries (include/agjk/cache.h), in the spirit of
+ * Box2D's simplex cache (Catto, b2ShapeCast/b2Distance): the previous final
+ * simplex is kept as points of A and of B in their local frames, which do not
+ * depend on the poses, and moved with the new poses to start the next query.
+ *
+ * Safety: a cache is used only for the pair that filled it and only when every
+ * value in it is finite and in range; during the query each support plane is
+ * checked against the cached points (agjk__warm_consistent), and a point cut
+ * off by one drops them all: the query goes on from that support (solver.c). */
+#include <string.h>
+
+#include "agjk/cache.h"
+#include "cache.h"
+#include "simplex.h"
+
+void agjk_cache_init_sized(agjk_cache *cache, size_t struct_size) {
+    if (!cache || struct_size < sizeof(agjk_cache)) return;
+    memset(cache, 0, sizeof *cache);
+    cache->struct_size = (uint32_t)sizeof *cache;
+}
+
+/* Curved shapes: the first direction is the last iterate's, extrapolated
+ * linearly from the query before (smooth motion turns the contact normal
+ * steadily), with this many times the last distance as its length: the
+ * momentum of the default method (and the others) then keeps the directions
+ * near it for a few iterations, probing directions around it, instead of
+ * zig-zagging as plain GJK steps do. Measured on the coherent-motion benchmark
+ * (ellipsoids, support calls per query, slow / fast motion): 10: 5.5 / 3.9,
+ * 30: 3.6 / 2.9, 100: 1.9 / 2.7, 200: 1.5 / 2.8, 1000: 2.3 / 3.7; plain GJK
+ * steps from the same direction: 7.7 / 5.9; without the extrapolation (100):
+ * 3.0 / 5.1. */
+#define CACHE_DIRECTION_WEIGHT 100.0
+
+/* FNV-1a over 64-bit words: a check value of the cache's content, so that
+ * garbage or hand-edited memory is not mistaken for a simplex of the pair.
+ * (Not a defence against a deliberate forger, who could as well corrupt the
+ * shapes.) count must be in 0..4. */
+static uint64_t mix(uint64_t h, const void *p, size_t n) {
+    uint64_t w = 0;
+    memcpy(&w, p, n <= sizeof w ? n : sizeof w);
+    return (h ^ w) * 0x100000001b3u;
+}
+
+static uint64_t mix_vec(uint64_t h, agjk_vec3 v) {
+    h = mix(h, &v.x, sizeof v.x);
+    h = mix(h, &v.y, sizeof v.y);
+    return mix(h, &v.z, sizeof v.z);
+}
+
+static uint64_t cache_check(const agjk_cache *c) {
+    uint64_t h = 0xcbf29ce484222325u;
+    h = mix(h, &c->count, sizeof c->count);
+    h = mix(h, &c->hint_a, sizeof c->hint_a);
+    h = mix(h, &c->hint_b, sizeof c->hint_b);
+    h = mix(h, &c->flags, sizeof c->flags);
+    h = mix(h, &c->support_a, sizeof c->support_a);
+    h = mix(h, &c->support_b, sizeof c->support_b);
+    h = mix(h, &c->data_a, sizeof c->data_a);
+    h = mix(h, &c->data_b, sizeof c->data_b);
+    for (int i = 0; i < c->count; ++i) {
+        h = mix_vec(h, c->point_a[i]);
+        h = mix_vec(h, c->point_b[i]);
+    }
+    h = mix_vec(h, c->direction);
+    return mix_vec(h, c->direction_prev);
+}
+
+/* Whether the cache was filled for the pair (a, b) and holds sane values. */
+static int cache_usable(const agjk_cache *c, const agjk_shape *a, const agjk_shape *b) {
+    if (c->struct_size != sizeof *c) return 0;
+    if (c->count < 0 || c->count > 4) return 0;
+    if (c->support_a != a->support || c->data_a != a->data || c->support_b != b->support ||
+        c->data_b != b->data)
+        return 0;
+    if (c->check != cache_check(c)) return 0;
+    return v3_in_range(c->direction) && v3_in_range(c->direction_prev);
+}
+
+/* 2 n1 - n0 for the unit directions n1 (last) and n0 (before), or n1. */
+static agjk_vec3 extrapolate(agjk_vec3 last, agjk_vec3 before) {
+    agjk_vec3 n1 = v3_normalize(last);
+    if (v3_maxabs(before) == 0.0) return n1;
+    agjk_vec3 n0 = v3_normalize(before);
+    agjk_vec3 p = v3_normalize(v3_sub(v3_scale(n1, 2.0), n0));
+    return v3_dot(p, n1) > 0.5 ? p : n1; /* a jump, not a steady turn */
+}
+
+int agjk__cache_load(const agjk_cache *cache, const agjk_shape *a, const agjk_shape *b,
+                     agjk__minkowski *md, agjk__solve_input *in) {
+    in->warm_count = 0;
+    if (!cache || !cache_usable(cache, a, b)) return 0;
+    md->hint_a = cache->hint_a;
+    md->hint_b = cache->hint_b;
+    double last = v3_norm(cache->direction);
+    int simplex = (cache->flags & AGJK_CACHE_FLAT) || cache->count == 4 || !(last > 0.0);
+    if (cache->count == 0 && !(last > 0.0)) return 0;
+    if (!simplex || cache->count == 0 || in->method == AGJK_METHOD_FRANK_WOLFE) {
+        /* A direction only (Frank-Wolfe's active set is its iterate alone). */
+        if (last > 0.0) {
+            in->x0 = v3_scale(extrapolate(cache->direction, cache->direction_prev),
+                              CACHE_DIRECTION_WEIGHT * last);
+            in->x0_given = 1;
+        }
+        return 1;
+    }
+    agjk_vec3 w[4];
+    for (int i = 0; i < cache->count; ++i)
+        if (!v3_in_range(cache->point_a[i]) || !v3_in_range(cache->point_b[i])) return 0;
+    for (int i = 0; i < cache->count; ++i) {
+        agjk__vertex *v = &in->warm[i];
+        /* A's frame is A's local frame; B's points move with the relative pose. */
+        v->a = cache->point_a[i];
+        v->b = v3_add(m3_mul(&md->rotation[0][0], cache->point_b[i]), md->translation);
+        v->w = v3_sub(v->a, v->b);
+        w[i] = v->w;
+    }
+    agjk_vec3 x;
+    unsigned mask = agjk__simplex_project(w, cache->count, in->warm_lambda, &x);
+    in->warm_mask = mask;
+    in->warm_x = x;
+    /* The first support goes in direction x, the projection; when the points
+     * enclose the origin (x = 0), in the last direction instead. */
+    if (mask == 0xFu || v3_maxabs(x) == 0.0) x = cache->direction;
+    if (v3_maxabs(x) == 0.0) x = v3(1.0, 0.0, 0.0);
+    in->x0 = x;
+    in->warm_count = cache->count;
+    return 1;
+}
+
+int agjk__warm_seed(const agjk__solve_input *in, agjk__vertex simplex[4], double lambda[4],
+                    agjk_vec3 *x) {
+    /* Projected by agjk__cache_load already: keep the support set. */
+    *x = in->warm_x;
+    if (in->warm_mask == 0xFu) {
+        for (int i = 0; i < 4; ++i) {
+            simplex[i] = in->warm[i];
+            lambda[i] = in->warm_lambda[i];
+        }
+        return 4;
+    }
+    int kept = 0;
+    for (int i = 0; i < in->warm_count; ++i) {
+        if (in->warm_mask & (1u << i)) {
+            simplex[kept] = in->warm[i];
+            lambda[kept] = in->warm_lambda[i];
+            ++kept;
+        }
+    }
+    return kept;
+}
+
+int agjk__warm_consistent(const agjk_vec3 *w, int count, agjk_vec3 d,
+                          const agjk__vertex *s, double noise) {
+    /* s minimises <d, .> over D: every point of D has <d, p> >= <d, s>, up to
+     * the rounding of the points (a few ulps of the problem's size). */
+    double dn = v3_norm(d);
+    double floor = v3_dot(d, s->w) - 8.0 * noise * dn;
+    for (int i = 0; i < count; ++i)
+        if (v3_dot(d, w[i]) < floor) return 0;
+    return 1;
+}
+
+void agjk__cache_save(agjk_cache *cache, const agjk_shape *a, const agjk_shape *b,
+                      const agjk__minkowski *md, const agjk__solve_output *out) {
+    /* The last direction becomes the one before, if the cache was this pair's. */
+    agjk_vec3 before = v3(0.0, 0.0, 0.0);
+    uint32_t flags_before = 0;
+    if (cache->struct_size == sizeof *cache && cache->support_a == a->support &&
+        cache->data_a == a->data && cache->support_b == b->support && cache->data_b == b->data &&
+        v3_in_range(cache->direction)) {
+        before = cache->direction;
+        flags_before = cache->flags;
+    }
+    double inv = 1.0 / md->scale;
+    agjk_vec3 x = v3_scale(out->x, inv);
+    cache->struct_size = (uint32_t)sizeof *cache;
+    cache->count = 0;
+    for (int i = 0; i < 4; ++i) cache->reserved[i] = 0.0;
+    if (!v3_in_range(x)) return;
+    cache->direction_prev = before;
+    cache->flags = out->flat || (flags_before & AGJK_CACHE_FLAT) ? AGJK_CACHE_FLAT : 0u;
+    cache->support_a = a->support;
+    cache->support_b = b->support;
+    cache->data_a = a->data;
+    cache->data_b = b->data;
+    cache->hint_a = md->hint_a;
+    cache->hint_b = md->hint_b;
+    /* Length: ||x||; but a Boolean query that stopped on its first support
+     * has no point of D yet (x is x_0): keep the previous length. */
+    double length = out->simplex_count == 0 && v3_maxabs(before) > 0.0 ? v3_norm(before) : v3_norm(x);
+    cache->direction = x;
+    /* The normal of the plane that certified x (or separated the shapes), when
+     * it is not x's own, is the better estimate of x*'s direction (solver.c). */
+    double dn = v3_norm(out->direction); /* solver units: in range, squares finite */
+    if (dn > 0.0) cache->direction = v3_scale(out->direction, length / dn);
+    int n = out->simplex_count < 0 ? 0 : out->simplex_count > 4 ? 4 : out->simplex_count;
+    for (int i = 0; i < n; ++i) {
+        agjk_vec3 pa = v3_scale(out->simplex[i].a, inv);
+        /* Back to B's local frame: R^T (b - t) (rounding of a few ulps, within
+         * the tolerance agjk__warm_consistent allows). */
+        agjk_vec3 pb = m3_tmul(&md->rotation[0][0],
+                               v3_sub(v3_scale(out->simplex[i].b, inv),
+                                      v3_scale(md->translation, inv)));
+        cache->point_a[i] = pa;
+        cache->point_b[i] = pb;
+    }
+    cache->count = n;
+    cache->check = cache_check(cache);
+}
