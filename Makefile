@@ -7,7 +7,7 @@
 #                        the CMake package (builds nothing but the library)
 #   make uninstall       removes what install put there, and the directories
 #                        it created once they are empty
-#   make check-abi       compare the shared library against abi/libagjk.abi (libabigail)
+#   make check-abi       the shared library against the ABI baselines in abi/ (libabigail)
 #
 # Output: one short line per compiled file and per test program; V=1 shows the
 # full commands and test output (test output is always in $(OUT)/check-logs/).
@@ -15,7 +15,7 @@
 # Each area of the tree adds its programs and rules in its own fragment
 # (tests/*/*.mk, tools/*/*.mk), so the areas stay independent.
 
-VERSION   := 0.1.0
+VERSION   := 0.2.0
 SOVERSION := 0
 PREFIX    ?= /usr/local
 LIBDIR    ?= $(PREFIX)/lib
@@ -152,13 +152,21 @@ uninstall:
 	    rmdir "$$d" 2>/dev/null || true; done
 	echo "uninstalled agjk from $(DESTDIR)$(PREFIX)"
 
-# ABI: abi/libagjk.abi is the committed baseline (abidw); check-abi fails on any
-# change libabigail reports. Regenerate deliberately with `make abi-baseline`.
+# ABI, two baselines (abidw):
+# - abi/libagjk-0.1.0.abi, the released 0.1.0: the library must stay
+#   compatible with it (abidiff may report additions, never an incompatible
+#   change: exit bit 8, nor an error: bits 1 and 2);
+# - abi/libagjk.abi, this version's: any change libabigail reports fails, so
+#   that every change of the ABI is deliberate (`make abi-baseline`).
 ABIDW_FLAGS := --no-corpus-path --headers-dir include/agjk
+ABIDIFF := abidiff --headers-dir1 include/agjk --headers-dir2 include/agjk
 check-abi: $(LIB_SO_REAL)
 	abidw $(ABIDW_FLAGS) --out-file $(OUT)/libagjk.abi $(LIB_SO_REAL)
-	abidiff --headers-dir1 include/agjk --headers-dir2 include/agjk \
-	    abi/libagjk.abi $(OUT)/libagjk.abi && echo "ABI: identical to abi/libagjk.abi"
+	@rc=0; $(ABIDIFF) abi/libagjk-0.1.0.abi $(OUT)/libagjk.abi >$(OUT)/abi-0.1.0.txt || rc=$$?; \
+	if [ $$((rc & 11)) -ne 0 ]; then cat $(OUT)/abi-0.1.0.txt; \
+	    echo "ABI: incompatible with 0.1.0 (abidiff exit $$rc)"; exit 1; fi; \
+	echo "ABI: compatible with 0.1.0 (abidiff exit $$rc: additions only)"
+	$(ABIDIFF) abi/libagjk.abi $(OUT)/libagjk.abi && echo "ABI: identical to abi/libagjk.abi"
 
 abi-baseline: $(LIB_SO_REAL)
 	@mkdir -p abi

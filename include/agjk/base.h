@@ -33,14 +33,14 @@ extern "C" {
 /** Major version: bumped on any ABI break; equals the shared library's SOVERSION. */
 #define AGJK_VERSION_MAJOR 0
 /** Minor version: bumped when functions or appended fields are added. */
-#define AGJK_VERSION_MINOR 1
+#define AGJK_VERSION_MINOR 2
 /** Patch version: bumped for fixes that change no interface. */
 #define AGJK_VERSION_PATCH 0
 /** The version as one integer, 10000 * major + 100 * minor + patch. */
 #define AGJK_VERSION_NUMBER \
     (AGJK_VERSION_MAJOR * 10000 + AGJK_VERSION_MINOR * 100 + AGJK_VERSION_PATCH)
 /** The version as a string literal, "major.minor.patch". */
-#define AGJK_VERSION_STRING "0.1.0"
+#define AGJK_VERSION_STRING "0.2.0"
 
 /** Version of the library linked at run time, as AGJK_VERSION_NUMBER encodes it.
  *  Compare with AGJK_VERSION_NUMBER to detect a header/library mismatch. */
