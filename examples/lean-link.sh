@@ -3,7 +3,7 @@
 # boxes, linked against libagjk.a with --gc-sections (a dynamically linked
 # program with the library linked in statically), must contain no polytope,
 # hull, adjacency, ellipsoid, cylinder or cone code, and no penetration depth
-# (EPA) code. Prints its text size.
+# (EPA) or warm-start cache code. Prints its text size.
 #
 #   examples/lean-link.sh [PROGRAM]
 # Default: $OUT/examples/spheres_and_boxes (OUT defaults to out), built first
@@ -18,7 +18,7 @@ else
     make -s -C "$top" OUT="${OUT:-out}" "$target" >/dev/null
     case $target in /*) bin=$target ;; *) bin=$top/$target ;; esac
 fi
-unwanted=$(nm "$bin" | grep -i -E 'polytope|adjacency|hull|ellipsoid|cylinder|cone_|capsule|segment_support|(^| |_)epa|signed_distance|penetration' || true)
+unwanted=$(nm "$bin" | grep -i -E 'polytope|adjacency|hull|ellipsoid|cylinder|cone_|capsule|segment_support|(^| |_)epa|signed_distance|penetration|_cache' || true)
 if [ -n "$unwanted" ]; then
     echo "lean link: unexpected symbols in $bin:" >&2
     echo "$unwanted" >&2

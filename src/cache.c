@@ -12,6 +12,7 @@
 
 #include "agjk/cache.h"
 #include "cache.h"
+#include "query_setup.h"
 #include "simplex.h"
 
 void agjk_cache_init_sized(agjk_cache *cache, size_t struct_size) {
@@ -128,39 +129,6 @@ int agjk__cache_load(const agjk_cache *cache, const agjk_shape *a, const agjk_sh
     return 1;
 }
 
-int agjk__warm_seed(const agjk__solve_input *in, agjk__vertex simplex[4], double lambda[4],
-                    agjk_vec3 *x) {
-    /* Projected by agjk__cache_load already: keep the support set. */
-    *x = in->warm_x;
-    if (in->warm_mask == 0xFu) {
-        for (int i = 0; i < 4; ++i) {
-            simplex[i] = in->warm[i];
-            lambda[i] = in->warm_lambda[i];
-        }
-        return 4;
-    }
-    int kept = 0;
-    for (int i = 0; i < in->warm_count; ++i) {
-        if (in->warm_mask & (1u << i)) {
-            simplex[kept] = in->warm[i];
-            lambda[kept] = in->warm_lambda[i];
-            ++kept;
-        }
-    }
-    return kept;
-}
-
-int agjk__warm_consistent(const agjk_vec3 *w, int count, agjk_vec3 d,
-                          const agjk__vertex *s, double noise) {
-    /* s minimises <d, .> over D: every point of D has <d, p> >= <d, s>, up to
-     * the rounding of the points (a few ulps of the problem's size). */
-    double dn = v3_norm(d);
-    double floor = v3_dot(d, s->w) - 8.0 * noise * dn;
-    for (int i = 0; i < count; ++i)
-        if (v3_dot(d, w[i]) < floor) return 0;
-    return 1;
-}
-
 void agjk__cache_save(agjk_cache *cache, const agjk_shape *a, const agjk_shape *b,
                       const agjk__minkowski *md, const agjk__solve_output *out) {
     /* The last direction becomes the one before, if the cache was this pair's. */
@@ -207,4 +175,31 @@ void agjk__cache_save(agjk_cache *cache, const agjk_shape *a, const agjk_shape *
     }
     cache->count = n;
     cache->check = cache_check(cache);
+}
+
+/* The warm-started queries of agjk/cache.h: the common query (query.c) with
+ * this file's load and save, so that a program that never calls them links
+ * no cache code. */
+static void cache_reset(agjk_cache *cache) { agjk_cache_init(cache); }
+
+static const agjk__warm_hooks cache_hooks = {agjk__cache_load, agjk__cache_save, cache_reset};
+
+agjk_status agjk_distance_cached(const agjk_shape *a, const agjk_pose *pose_a,
+                                 const agjk_shape *b, const agjk_pose *pose_b,
+                                 const agjk_options *options, agjk_cache *cache,
+                                 agjk_result *result) {
+    agjk_status status =
+        agjk__query_run(a, pose_a, b, pose_b, options, result, 0, cache, &cache_hooks);
+    if (status == AGJK_STATUS_INVALID_INPUT && cache) agjk_cache_init(cache);
+    return status;
+}
+
+agjk_status agjk_collide_cached(const agjk_shape *a, const agjk_pose *pose_a,
+                                const agjk_shape *b, const agjk_pose *pose_b,
+                                const agjk_options *options, agjk_cache *cache,
+                                agjk_result *result) {
+    agjk_status status =
+        agjk__query_run(a, pose_a, b, pose_b, options, result, 1, cache, &cache_hooks);
+    if (status == AGJK_STATUS_INVALID_INPUT && cache) agjk_cache_init(cache);
+    return status;
 }

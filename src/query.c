@@ -3,16 +3,16 @@
 #include <string.h>
 
 #include "agjk/query.h"
-#include "cache.h"
 #include "query_setup.h"
 
 static agjk_vec3 to_world(const agjk_pose *pose, agjk_vec3 p) {
     return v3_add(m3_mul(&pose->rotation[0][0], p), pose->translation);
 }
 
-static agjk_status run(const agjk_shape *a, const agjk_pose *pose_a, const agjk_shape *b,
-                       const agjk_pose *pose_b, const agjk_options *options,
-                       agjk_result *result, int boolean_mode, agjk_cache *cache) {
+agjk_status agjk__query_run(const agjk_shape *a, const agjk_pose *pose_a, const agjk_shape *b,
+                            const agjk_pose *pose_b, const agjk_options *options,
+                            agjk_result *result, int boolean_mode, struct agjk_cache *cache,
+                            const agjk__warm_hooks *hooks) {
     if (!result) return AGJK_STATUS_INVALID_INPUT;
     memset(result, 0, sizeof *result);
     result->momentum_stop_iteration = -1;
@@ -26,13 +26,13 @@ static agjk_status run(const agjk_shape *a, const agjk_pose *pose_a, const agjk_
     in.want_witness = in.want_witness && !boolean_mode;
     in.keep_points = in.want_witness || cache; /* the cache keeps the simplex */
     in.track_flat = cache != NULL;
-    if (cache) agjk__cache_load(cache, a, b, &md, &in); /* warm start (cache.c) */
+    if (cache) hooks->load(cache, a, b, &md, &in); /* warm start (cache.c) */
 
     agjk__solve_output out;
     agjk__solve(&md, &in, &out);
     if (cache) {
-        if (out.outcome == AGJK__BAD_SUPPORT) agjk_cache_init(cache);
-        else agjk__cache_save(cache, a, b, &md, &out);
+        if (out.outcome == AGJK__BAD_SUPPORT) hooks->reset(cache);
+        else hooks->save(cache, a, b, &md, &out);
     }
 
     result->iterations = out.iterations;
@@ -122,30 +122,11 @@ static agjk_status run(const agjk_shape *a, const agjk_pose *pose_a, const agjk_
 agjk_status agjk_distance(const agjk_shape *a, const agjk_pose *pose_a, const agjk_shape *b,
                           const agjk_pose *pose_b, const agjk_options *options,
                           agjk_result *result) {
-    return run(a, pose_a, b, pose_b, options, result, 0, NULL);
+    return agjk__query_run(a, pose_a, b, pose_b, options, result, 0, NULL, NULL);
 }
 
 agjk_status agjk_collide(const agjk_shape *a, const agjk_pose *pose_a, const agjk_shape *b,
                          const agjk_pose *pose_b, const agjk_options *options,
                          agjk_result *result) {
-    return run(a, pose_a, b, pose_b, options, result, 1, NULL);
-}
-
-/* The warm-started queries of agjk/cache.h. */
-agjk_status agjk_distance_cached(const agjk_shape *a, const agjk_pose *pose_a,
-                                 const agjk_shape *b, const agjk_pose *pose_b,
-                                 const agjk_options *options, agjk_cache *cache,
-                                 agjk_result *result) {
-    agjk_status status = run(a, pose_a, b, pose_b, options, result, 0, cache);
-    if (status == AGJK_STATUS_INVALID_INPUT && cache) agjk_cache_init(cache);
-    return status;
-}
-
-agjk_status agjk_collide_cached(const agjk_shape *a, const agjk_pose *pose_a,
-                                const agjk_shape *b, const agjk_pose *pose_b,
-                                const agjk_options *options, agjk_cache *cache,
-                                agjk_result *result) {
-    agjk_status status = run(a, pose_a, b, pose_b, options, result, 1, cache);
-    if (status == AGJK_STATUS_INVALID_INPUT && cache) agjk_cache_init(cache);
-    return status;
+    return agjk__query_run(a, pose_a, b, pose_b, options, result, 1, NULL, NULL);
 }

@@ -15,4 +15,22 @@ int agjk__query_prepare(const agjk_shape *a, const agjk_pose *pose_a, const agjk
                         const agjk_pose *pose_b, const agjk_options *options,
                         agjk_options *opts, agjk__minkowski *md, agjk__solve_input *in);
 
+/* The warm-start cache's part of a query (cache.c), reached through pointers
+ * so that a program without cached queries links no cache code. */
+struct agjk_cache;
+typedef struct agjk__warm_hooks {
+    int (*load)(const struct agjk_cache *cache, const agjk_shape *a, const agjk_shape *b,
+                agjk__minkowski *md, agjk__solve_input *in);
+    void (*save)(struct agjk_cache *cache, const agjk_shape *a, const agjk_shape *b,
+                 const agjk__minkowski *md, const agjk__solve_output *out);
+    void (*reset)(struct agjk_cache *cache);
+} agjk__warm_hooks;
+
+/* agjk_distance (boolean_mode 0) and agjk_collide (1), warm-started from
+ * `cache` through `hooks` when cache is not NULL (query.c). */
+agjk_status agjk__query_run(const agjk_shape *a, const agjk_pose *pose_a, const agjk_shape *b,
+                            const agjk_pose *pose_b, const agjk_options *options,
+                            agjk_result *result, int boolean_mode, struct agjk_cache *cache,
+                            const agjk__warm_hooks *hooks);
+
 #endif

@@ -244,6 +244,44 @@ static int plane_stops(const solver *sv, agjk__solve_output *out) {
     return 1;
 }
 
+/* Warm start: puts in->warm (projected by agjk__cache_load, cache.c) into
+ * simplex[] as the active set with its weights and projection *x. Returns the
+ * number of vertices kept; 4 when they enclose the origin (*x = 0). */
+static int warm_seed(const agjk__solve_input *in, agjk__vertex simplex[4], double lambda[4],
+                     agjk_vec3 *x) {
+    /* Projected by agjk__cache_load already: keep the support set. */
+    *x = in->warm_x;
+    if (in->warm_mask == 0xFu) {
+        for (int i = 0; i < 4; ++i) {
+            simplex[i] = in->warm[i];
+            lambda[i] = in->warm_lambda[i];
+        }
+        return 4;
+    }
+    int kept = 0;
+    for (int i = 0; i < in->warm_count; ++i) {
+        if (in->warm_mask & (1u << i)) {
+            simplex[kept] = in->warm[i];
+            lambda[kept] = in->warm_lambda[i];
+            ++kept;
+        }
+    }
+    return kept;
+}
+
+/* Warm start: 0 when the plane of the support s found in direction d cuts off
+ * one of the points w[0..count-1] (which are then not points of D), else 1. */
+static int warm_consistent(const agjk_vec3 *w, int count, agjk_vec3 d, const agjk__vertex *s,
+                           double noise) {
+    /* s minimises <d, .> over D: every point of D has <d, p> >= <d, s>, up to
+     * the rounding of the points (a few ulps of the problem's size). */
+    double dn = v3_norm(d);
+    double floor = v3_dot(d, s->w) - 8.0 * noise * dn;
+    for (int i = 0; i < count; ++i)
+        if (v3_dot(d, w[i]) < floor) return 0;
+    return 1;
+}
+
 /* The first support, in direction x_0 for every method (d_{-1} = s_{-1} = x_0
  * gives d_0 = x_0), also tells the problem's size: from then on the solver
  * works in units where it is about 1 (agjk__minkowski_set_scale). */
@@ -310,7 +348,7 @@ void agjk__solve(agjk__minkowski *md, const agjk__solve_input *in, agjk__solve_o
      * size, where x_0, its projection, is used as given. */
     if (in->warm_count > 0 && sv.x.x == in->x0.x && sv.x.y == in->x0.y && sv.x.z == in->x0.z) {
         agjk__vertex seed[4];
-        sv.count = agjk__warm_seed(in, seed, sv.lambda, &sv.x);
+        sv.count = warm_seed(in, seed, sv.lambda, &sv.x);
         for (int i = 0; i < sv.count; ++i) {
             sv.w[i] = seed[i].w;
             sv.a[i] = seed[i].a;
@@ -334,7 +372,7 @@ void agjk__solve(agjk__minkowski *md, const agjk__solve_input *in, agjk__solve_o
         if (warm) {
             /* A support plane that cuts off a cached point proves the cache
              * stale: go on cold from this support (cache.c). */
-            if (!agjk__warm_consistent(sv.w, sv.count, d, &s, md->noise)) {
+            if (!warm_consistent(sv.w, sv.count, d, &s, md->noise)) {
                 sv.count = 0;
                 have_x = 0;
                 warm = warm_enclosed = 0;

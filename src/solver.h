@@ -106,15 +106,4 @@ typedef struct agjk__solve_output {
 
 void agjk__solve(agjk__minkowski *md, const agjk__solve_input *in, agjk__solve_output *out);
 
-/* Warm start (cache.c). Puts in->warm into simplex[] as the active set with
- * its weights and projection *x. Returns the number of vertices kept; 4 when
- * they enclose the origin (*x = 0). */
-int agjk__warm_seed(const agjk__solve_input *in, agjk__vertex simplex[4], double lambda[4],
-                    agjk_vec3 *x);
-
-/* Warm start (cache.c): 0 when the plane of the support s found in direction d
- * cuts off one of the points w[0..count-1] (then not points of D), else 1. */
-int agjk__warm_consistent(const agjk_vec3 *w, int count, agjk_vec3 d,
-                          const agjk__vertex *s, double noise);
-
 #endif
