@@ -15,7 +15,7 @@ int main(void) {
     agjk_pose pose_a = {{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}, {0, 0, 0}};
     agjk_pose pose_b = {{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}, {1.5, 0, 0}};
 
-    agjk_options options = agjk_default_options();  /* Nesterov, gap <= 1e-8 */
+    agjk_options options = agjk_default_options();  /* adaptive method, gap <= 1e-8 */
     agjk_result result;
     if (agjk_distance(&a, &pose_a, &b, &pose_b, &options, &result) == AGJK_STATUS_INVALID_INPUT) {
         fprintf(stderr, "bad input\n");
