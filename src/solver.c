@@ -329,8 +329,11 @@ void agjk__solve(agjk__minkowski *md, const agjk__solve_input *in, agjk__solve_o
     int have_x = 0;      /* x is a point of D (after the first projection) */
     int stalled = 0;     /* consecutive iterations without progress */
     int warm = 0, warm_enclosed = 0; /* cached points in the simplex (cache.c) */
-    /* Warm-started points carry a few more ulps from their frame changes. */
-    sv.lie_factor = in->warm_count > 0 ? 16.0 : 4.0;
+    /* Warm-started points carry a few more ulps from their frame changes:
+     * warm_consistent lets each lie up to 8 noise beyond a support plane, so a
+     * gap (2 ||x|| times the distance beyond the plane) proves a lie only well
+     * beyond 16 ||x|| noise. */
+    sv.lie_factor = in->warm_count > 0 ? 32.0 : 4.0;
 
     out->outcome = AGJK__ITERATION_CAP;
     out->gap = INFINITY;
