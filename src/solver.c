@@ -312,8 +312,6 @@ static void first_support(solver *sv, agjk__vertex *s, agjk__solve_output *out) 
     }
     sv->x = x;
     sv->x2 = v3_norm2(x);
-    sv->m.d_prev = x; /* d_{-1} = s_{-1} = x_0, in solver units */
-    sv->m.s_prev = x;
     sv->abs_tolerance = sv->in->tolerance * md->scale * md->scale;
 }
 
@@ -322,9 +320,34 @@ void agjk__solve(agjk__minkowski *md, const agjk__solve_input *in, agjk__solve_o
     sv.md = md;
     sv.in = in;
     sv.count = 0;
+
+    out->outcome = AGJK__ITERATION_CAP;
+    out->gap = INFINITY;
+    out->gap_valid = 0;
+    out->iterations = 1;
+    out->support_calls = 0;
+    out->momentum_stop = -1;
+    out->direction = v3(0.0, 0.0, 0.0);
+    out->simplex_count = 0;
+    out->flat = 0;
+
+    /* Iteration 0's support, and its tests, before any other set-up: distant
+     * shapes in Boolean mode end here (a separating plane at once, as in
+     * Alg. 2), paying for no simplex or momentum work. */
+    agjk__vertex s;
+    first_support(&sv, &s, out);
+    agjk_vec3 d0 = sv.x; /* direction of the first support */
+    if (support_ends_query(&sv, d0, &s, out)) {
+        out->x = sv.x;
+        out->noise = md->noise;
+        out->a = out->b = v3(0.0, 0.0, 0.0);
+        return;
+    }
+
     sv.lambda[0] = 1.0;
     sv.lambda[1] = sv.lambda[2] = sv.lambda[3] = 0.0;
-    agjk__momentum_init(&sv.m, in->method, in->x0, in->x0_given);
+    /* x_0 in solver units: d_{-1} = s_{-1} = x_0. */
+    agjk__momentum_init(&sv.m, in->method, sv.x, in->x0_given);
     int adaptive = in->method == AGJK_METHOD_ADAPTIVE;
     int have_x = 0;      /* x is a point of D (after the first projection) */
     int stalled = 0;     /* consecutive iterations without progress */
@@ -335,17 +358,6 @@ void agjk__solve(agjk__minkowski *md, const agjk__solve_input *in, agjk__solve_o
      * beyond 16 ||x|| noise. */
     sv.lie_factor = in->warm_count > 0 ? 32.0 : 4.0;
 
-    out->outcome = AGJK__ITERATION_CAP;
-    out->gap = INFINITY;
-    out->gap_valid = 0;
-    out->iterations = 0;
-    out->support_calls = 0;
-    out->momentum_stop = -1;
-    out->direction = v3(0.0, 0.0, 0.0);
-
-    agjk__vertex s;
-    first_support(&sv, &s, out);
-    agjk_vec3 d0 = sv.x; /* direction of the first support */
     /* Warm start: the cached simplex is the active set at k = 0, and plain GJK
      * directions take it from there (cache.c). Only for problems of ordinary
      * size, where x_0, its projection, is used as given. */
@@ -370,8 +382,8 @@ void agjk__solve(agjk__minkowski *md, const agjk__solve_input *in, agjk__solve_o
             if (sv.m.active) d = agjk__momentum_direction(&sv.m, k, sv.x);
             support(&sv, &d, &s);
             ++out->support_calls;
+            if (support_ends_query(&sv, d, &s, out)) break;
         }
-        if (support_ends_query(&sv, d, &s, out)) break;
         if (warm) {
             /* A support plane that cuts off a cached point proves the cache
              * stale: go on cold from this support (cache.c). */
