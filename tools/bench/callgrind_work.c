@@ -9,27 +9,35 @@
  *
  *   agjk-callgrind-work agjk|coal WORKLOAD [PROBLEMS]
  *
- * WORKLOAD: ellipsoids-close, boxes-close (GJK, distance), ellipsoids-distant,
- * boxes-distant (GJK, Boolean). stdout: one line per query, "query I
+ * WORKLOAD: ellipsoids-close, boxes-close, hulls-close (GJK, distance),
+ * ellipsoids-distant, boxes-distant, hulls-distant (GJK, Boolean); hulls: 141
+ * points on an ellipsoid, hill climbing on the Qhull hull's vertex graph (agjk)
+ * and Coal's own graph of the same hull, as in the benchmark. stdout: one line per query, "query I
  * support_calls N verdict V", in dump order. */
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "coal_adapter.h"
+#include "coal_bench.h"
+#include "hull_support.h"
 #include "problems.h"
 #include "solve.h"
 
 typedef struct workload {
     const char *name;
     int family, category, mode;
+    int hull_n; /* BENCH_HULLS: points per hull */
 } workload;
 
 static const workload workloads[] = {
-    {"ellipsoids-close", BENCH_ELLIPSOIDS, BENCH_CLOSE, BENCH_DISTANCE},
-    {"boxes-close", BENCH_BOXES, BENCH_CLOSE, BENCH_DISTANCE},
-    {"ellipsoids-distant", BENCH_ELLIPSOIDS, BENCH_DISTANT, BENCH_BOOLEAN},
-    {"boxes-distant", BENCH_BOXES, BENCH_DISTANT, BENCH_BOOLEAN},
+    {"ellipsoids-close", BENCH_ELLIPSOIDS, BENCH_CLOSE, BENCH_DISTANCE, 0},
+    {"boxes-close", BENCH_BOXES, BENCH_CLOSE, BENCH_DISTANCE, 0},
+    {"hulls-close", BENCH_HULLS, BENCH_CLOSE, BENCH_DISTANCE, 141},
+    {"ellipsoids-distant", BENCH_ELLIPSOIDS, BENCH_DISTANT, BENCH_BOOLEAN, 0},
+    {"boxes-distant", BENCH_BOXES, BENCH_DISTANT, BENCH_BOOLEAN, 0},
+    {"hulls-distant", BENCH_HULLS, BENCH_DISTANT, BENCH_BOOLEAN, 141},
 };
 
 typedef struct agjk_query {
@@ -54,58 +62,130 @@ int measured_agjk(const agjk_query *q, agjk_result *res) {
 
 int measured_coal(void *query) { return coal_adapter_query_run(query); }
 
-static void *coal_shape_of(const bench_shape *s) {
-    coal_shape_desc d;
-    memset(&d, 0, sizeof d);
-    d.kind = s->kind == REF_ELLIPSOID ? COAL_SHAPE_ELLIPSOID : COAL_SHAPE_BOX;
-    d.size[0] = s->size.x;
-    d.size[1] = s->size.y;
-    d.size[2] = s->size.z;
-    return coal_adapter_shape_new(&d);
+/* Timing mode (not for callgrind): each problem run REPS times in a row by
+ * agjk, then by Coal, alternating in rounds; per problem the fastest round's
+ * mean. A quick same-run comparison while working on the kernel; the
+ * benchmark (make bench) is the reference. */
+#define TIME_MAX 4096
+#define TIME_ROUNDS 5
+typedef struct time_stats {
+    double agjk_ns[TIME_MAX], coal_ns[TIME_MAX];
+    int count;
+} time_stats;
+
+static double best_round(int (*run)(const void *), const void *q, int reps) {
+    double best = 1e300;
+    for (int r = 0; r < TIME_ROUNDS; ++r) {
+        double t0 = bench_now_ns();
+        for (int k = 0; k < reps; ++k) run(q);
+        double t = (bench_now_ns() - t0) / reps;
+        if (t < best) best = t;
+    }
+    return best;
 }
 
-static void pose_to(const agjk_pose *p, double r[9], double t[3]) {
-    int i, j;
-    for (i = 0; i < 3; ++i)
-        for (j = 0; j < 3; ++j) r[3 * i + j] = p->rotation[i][j];
-    t[0] = p->translation.x;
-    t[1] = p->translation.y;
-    t[2] = p->translation.z;
+static int run_agjk(const void *q) {
+    agjk_result res;
+    return measured_agjk(q, &res);
+}
+static int run_coal(const void *q) { return measured_coal((void *)(uintptr_t)q); }
+
+static void time_one(const bench_set *set, const bench_problem *p, const workload *w, int reps,
+                     time_stats *st) {
+    agjk_query q;
+    coal_query_desc d;
+    q.a = &set->shapes[p->a];
+    q.b = &set->shapes[p->b];
+    q.p = p;
+    q.boolean = w->mode == BENCH_BOOLEAN;
+    q.opt = agjk_default_options();
+    q.opt.method = AGJK_METHOD_GJK;
+    q.opt.tolerance = 1e-8;
+    q.opt.max_iterations = 1000;
+    q.opt.compute = AGJK_COMPUTE_DISTANCE;
+    void *sa = coal_bench_shape(q.a), *sb = coal_bench_shape(q.b), *cq;
+    memset(&d, 0, sizeof d);
+    coal_bench_pose(&p->pose_a, d.rotation_a, d.translation_a);
+    coal_bench_pose(&p->pose_b, d.rotation_b, d.translation_b);
+    d.method = COAL_GJK;
+    d.boolean = q.boolean;
+    d.tolerance = 1e-8;
+    d.max_iterations = 1000;
+    d.now_ns = bench_now_ns;
+    d.trimmed_mean = bench_trimmed_mean;
+    cq = coal_adapter_query_new(sa, sb, &d);
+    if (cq && st->count < TIME_MAX) {
+        st->agjk_ns[st->count] = best_round(run_agjk, &q, reps);
+        st->coal_ns[st->count] = best_round(run_coal, (const void *)(uintptr_t)cq, reps);
+        ++st->count;
+    }
+    coal_adapter_query_free(cq);
+    coal_adapter_shape_free(sa);
+    coal_adapter_shape_free(sb);
+}
+
+static int cmp_double(const void *a, const void *b) {
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+static void time_report(time_stats *st, const char *name) {
+    static double ratio[TIME_MAX];
+    double sa = 0.0, sc = 0.0;
+    for (int i = 0; i < st->count; ++i) {
+        ratio[i] = st->agjk_ns[i] / st->coal_ns[i];
+        sa += st->agjk_ns[i];
+        sc += st->coal_ns[i];
+    }
+    qsort(ratio, (size_t)st->count, sizeof ratio[0], cmp_double);
+    printf("%s: %d problems, mean ns agjk %.1f coal %.1f, median ratio agjk/coal %.3f\n", name,
+           st->count, sa / st->count, sc / st->count, st->count ? ratio[st->count / 2] : 0.0);
 }
 
 int main(int argc, char **argv) {
     const workload *w = NULL;
     bench_set set;
     bench_rng rng;
-    int i, n = 0, max = argc > 3 ? atoi(argv[3]) : 40, coal;
-    if (argc < 3 || (strcmp(argv[1], "agjk") != 0 && strcmp(argv[1], "coal") != 0)) {
+    time_stats stats = {0};
+    int i, n = 0, max = argc > 3 ? atoi(argv[3]) : 40, coal, timing;
+    if (argc < 3 || (strcmp(argv[1], "agjk") != 0 && strcmp(argv[1], "coal") != 0 &&
+                     strcmp(argv[1], "time") != 0)) {
         fprintf(stderr, "usage: agjk-callgrind-work agjk|coal WORKLOAD [PROBLEMS]\n"
-                        "WORKLOAD: ellipsoids-close boxes-close ellipsoids-distant "
-                        "boxes-distant\n");
+                        "       agjk-callgrind-work time WORKLOAD [PROBLEMS [REPS]]\n"
+                        "WORKLOAD: ellipsoids-close boxes-close hulls-close "
+                        "ellipsoids-distant boxes-distant hulls-distant\n");
         return 2;
     }
     coal = strcmp(argv[1], "coal") == 0;
+    timing = strcmp(argv[1], "time") == 0;
     for (i = 0; i < (int)(sizeof workloads / sizeof workloads[0]); ++i)
         if (strcmp(argv[2], workloads[i].name) == 0) w = &workloads[i];
     if (!w || max < 1) {
         fprintf(stderr, "agjk-callgrind-work: unknown workload '%s' or bad count\n", argv[2]);
         return 2;
     }
-    if (coal && !coal_adapter_available()) {
+    if ((coal || timing) && !coal_adapter_available()) {
         fprintf(stderr, "agjk-callgrind-work: no Coal in this build (%s)\n",
                 coal_adapter_version());
         return 3;
     }
     /* The benchmark's generator and seed: 12 targets per pose, 4 per category. */
     bench_set_init(&set, 2 * (max / 4 + 2), BENCH_TARGET_COUNT * (max / 4 + 2));
+    set.polytope_hook = bench_hull_hook; /* as agjk-bench: the hull's vertex graph */
+    set.aux_free = bench_hull_free;
     bench_rng_seed(&rng, 4 * 1 + (uint64_t)w->family);
-    bench_generate(&set, w->family, max / 4 + 1, 1, 0, NULL, &rng, 0, 0);
+    bench_generate(&set, w->family, max / 4 + 1, 1, w->hull_n, NULL, &rng, 0, 0);
     for (i = 0; i < set.problem_count && n < max; ++i) {
         const bench_problem *p = &set.problems[i];
         agjk_query q;
         agjk_result res;
         int verdict, calls, k;
         if (p->category != w->category) continue;
+        if (timing) {
+            time_one(&set, p, w, argc > 4 ? atoi(argv[4]) : 200, &stats);
+            ++n;
+            continue;
+        }
         q.a = &set.shapes[p->a];
         q.b = &set.shapes[p->b];
         q.p = p;
@@ -123,10 +203,10 @@ int main(int argc, char **argv) {
         } else {
             coal_query_desc d;
             coal_answer a;
-            void *sa = coal_shape_of(q.a), *sb = coal_shape_of(q.b), *cq;
+            void *sa = coal_bench_shape(q.a), *sb = coal_bench_shape(q.b), *cq;
             memset(&d, 0, sizeof d);
-            pose_to(&p->pose_a, d.rotation_a, d.translation_a);
-            pose_to(&p->pose_b, d.rotation_b, d.translation_b);
+            coal_bench_pose(&p->pose_a, d.rotation_a, d.translation_a);
+            coal_bench_pose(&p->pose_b, d.rotation_b, d.translation_b);
             d.method = COAL_GJK;
             d.boolean = q.boolean;
             d.tolerance = 1e-8;
@@ -136,6 +216,10 @@ int main(int argc, char **argv) {
             d.trimmed_mean = bench_trimmed_mean;
             cq = coal_adapter_query_new(sa, sb, &d);
             if (!cq || coal_adapter_run(sa, sb, &d, &a) != 0) return 3; /* counts the calls */
+            /* Once unmeasured first: Coal sizes its hill-climbing buffers (an
+             * allocation) on a query object's first use, and the benchmark
+             * times the runs after it. */
+            coal_adapter_query_run(cq);
             verdict = measured_coal(cq);
             calls = a.support_calls;
             coal_adapter_query_free(cq);
@@ -145,6 +229,7 @@ int main(int argc, char **argv) {
         k = n++;
         printf("query %d support_calls %d verdict %d\n", k, calls, verdict);
     }
+    if (timing) time_report(&stats, argv[2]);
     bench_set_free(&set);
     return n > 0 ? 0 : 1;
 }

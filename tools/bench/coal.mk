@@ -48,11 +48,13 @@ $(BENCH_BIN): $(OUT)/tools/bench/coal_bench.o $(BENCH_COAL_ADAPTER) $(BENCH_COAL
 # Instruction counts, agjk and Coal on identical problems (valgrind callgrind):
 #   make bench-callgrind        see tools/bench/callgrind.sh
 BENCH_CG_BIN := $(OUT)/tools/bench/agjk-callgrind-work
-$(BENCH_CG_BIN): $(OUT)/tools/bench/callgrind_work.o $(BENCH_COAL_ADAPTER) $(BENCH_LIB) \
-                 $(OUT)/tests/common/libtestcommon.a $(LIB_A) $(BENCH_COAL_STAMP)
+$(BENCH_CG_BIN): $(OUT)/tools/bench/callgrind_work.o $(OUT)/tools/bench/coal_bench.o \
+                 $(OUT)/tools/bench/hull_support.o $(BENCH_COAL_ADAPTER) $(BENCH_LIB) \
+                 $(BENCH_MESH_LIB) $(OUT)/tests/common/libtestcommon.a $(LIB_A) $(BENCH_COAL_STAMP)
 	$(or $(BENCH_LD),$(CC)) $(ALL_CFLAGS) -o $@ $(OUT)/tools/bench/callgrind_work.o \
-	    $(BENCH_COAL_ADAPTER) $(BENCH_LIB) $(OUT)/tests/common/libtestcommon.a $(LIB_A) \
-	    $(BENCH_COAL_LIBS) -lm
+	    $(OUT)/tools/bench/coal_bench.o $(OUT)/tools/bench/hull_support.o \
+	    $(BENCH_COAL_ADAPTER) $(BENCH_LIB) $(BENCH_MESH_LIB) $(OUT)/tests/common/libtestcommon.a \
+	    $(LIB_A) $(BENCH_MESH_LIBS) $(BENCH_CCD_LIBS) $(BENCH_COAL_LIBS) -lm
 TOOL_BINS += $(BENCH_CG_BIN)
 
 .PHONY: bench-callgrind

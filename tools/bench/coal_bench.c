@@ -14,7 +14,7 @@ static const int coal_methods[4] = {BM_GJK, BM_NESTEROV, BM_NESTEROV_NORMALIZED,
 static const int coal_codes[4] = {COAL_GJK, COAL_NESTEROV, COAL_NESTEROV_NORMALIZED, COAL_POLYAK};
 static const char *const short_names[4] = {"GJK", "Nesterov", "Nest.-norm.", "Polyak"};
 
-static void *coal_shape_of(const bench_shape *s) {
+void *coal_bench_shape(const bench_shape *s) {
     coal_shape_desc d;
     memset(&d, 0, sizeof d);
     d.size[0] = s->size.x;
@@ -36,7 +36,7 @@ static void *coal_shape_of(const bench_shape *s) {
     return coal_adapter_shape_new(&d);
 }
 
-static void pose_to(const agjk_pose *p, double r[9], double t[3]) {
+void coal_bench_pose(const agjk_pose *p, double r[9], double t[3]) {
     int i, j;
     for (i = 0; i < 3; ++i)
         for (j = 0; j < 3; ++j) r[3 * i + j] = p->rotation[i][j];
@@ -78,7 +78,7 @@ coal_bench_data *coal_bench_run(const bench_config *cfg, const bench_set *set) {
     d->recs = calloc((size_t)set->problem_count * 8 + 1, sizeof *d->recs);
     if (!d->recs) abort();
     d->version = coal_adapter_version();
-    for (i = 0; i < set->shape_count; ++i) shapes[i] = coal_shape_of(&set->shapes[i]);
+    for (i = 0; i < set->shape_count; ++i) shapes[i] = coal_bench_shape(&set->shapes[i]);
     fprintf(stderr, "agjk-bench: agjk vs Coal %s, same methods and problems (R = %d)\n",
             d->version, cfg->coal_reps);
     for (i = 0; i < set->problem_count; ++i) {
@@ -102,8 +102,8 @@ coal_bench_data *coal_bench_run(const bench_config *cfg, const bench_set *set) {
                 if (bench_solve(set, p, coal_methods[m], (bench_mode)mode, &o, &r->agjk.run) != 0)
                     continue;
                 memset(&q, 0, sizeof q);
-                pose_to(&p->pose_a, q.rotation_a, q.translation_a);
-                pose_to(&p->pose_b, q.rotation_b, q.translation_b);
+                coal_bench_pose(&p->pose_a, q.rotation_a, q.translation_a);
+                coal_bench_pose(&p->pose_b, q.rotation_b, q.translation_b);
                 q.method = coal_codes[m];
                 q.boolean = mode;
                 q.tolerance = cfg->tolerance;

@@ -28,6 +28,12 @@ typedef struct coal_bench_data {
     const char *version;
 } coal_bench_data;
 
+/* Coal's counterpart of a benchmark shape (coal_adapter_shape_new; NULL for a
+ * polytope without a solid hull), and a pose in the adapter's layout (row-major
+ * rotation, translation). */
+void *coal_bench_shape(const bench_shape *s);
+void coal_bench_pose(const agjk_pose *p, double r[9], double t[3]);
+
 /* Runs the comparison when Coal was built in and cfg->coal_reps > 0; returns
  * NULL (after saying why on stderr) otherwise. */
 coal_bench_data *coal_bench_run(const bench_config *cfg, const bench_set *set);
