@@ -51,20 +51,19 @@ void agjk__minkowski_init(agjk__minkowski *md, const agjk_shape *a, const agjk_p
     md->bad_support = 0;
     md->scale = 1.0;
     md->rescaled = 1.0;
-    /* R = R_A^T R_B, column by column: R e_j = R_A^T (R_B e_j). */
+    /* R = R_A^T R_B: entry (i, j) is <column i of R_A, column j of R_B>. */
     const double *ra = &pose_a->rotation[0][0], *rb = &pose_b->rotation[0][0];
-    for (int j = 0; j < 3; ++j) {
-        agjk_vec3 c = m3_tmul(ra, v3(rb[j], rb[3 + j], rb[6 + j]));
-        md->rotation[0][j] = c.x;
-        md->rotation[1][j] = c.y;
-        md->rotation[2][j] = c.z;
-    }
-    md->translation = m3_tmul(&pose_a->rotation[0][0], v3_sub(pose_b->translation, pose_a->translation));
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
+            md->rotation[i][j] = ra[i] * rb[j] + ra[3 + i] * rb[3 + j] + ra[6 + i] * rb[6 + j];
+    md->translation = m3_tmul(ra, v3_sub(pose_b->translation, pose_a->translation));
     md->translation_size = v3_maxabs(md->translation);
     agjk__minkowski_grow(md, 0.0);
-    set_limits(md);
-    /* The problem's size is unknown until the first support: unit-size
-     * directions until agjk__minkowski_set_scale has seen it. */
+    /* set_limits for scale 1, except that the problem's size is unknown until
+     * the first support: unit-size directions until agjk__minkowski_set_scale
+     * has seen it. */
+    md->raw_limit = AGJK__SOLVER_SIZE_LIMIT < AGJK_MAX_COORDINATE ? AGJK__SOLVER_SIZE_LIMIT
+                                                                   : AGJK_MAX_COORDINATE;
     md->direction_min = 1.0;
 }
 
@@ -88,18 +87,9 @@ static double unit_factor(double size) {
     return ldexp(1.0, e);
 }
 
-double agjk__minkowski_set_scale(agjk__minkowski *md) {
-    double size = md->magnitude;
-    if (md->translation_size > size) size = md->translation_size;
-    if (md->margin > size) size = md->margin;
-    /* Problems of ordinary size stay in the caller's units (no cost, and power-
-     * of-two scalings commute with rounding anyway); only extreme ones move. */
-    double f = 1.0;
-    if (size > 0.0 && (size < 0x1p-100 || size > 0x1p100)) {
-        f = unit_factor(size);
-        apply_factor(md, f);
-    }
-    set_limits(md);
+double agjk__minkowski_rescale_extreme(agjk__minkowski *md, double size) {
+    double f = unit_factor(size);
+    apply_factor(md, f);
     return f;
 }
 

@@ -62,7 +62,10 @@ void agjk__minkowski_init(agjk__minkowski *md, const agjk_shape *a, const agjk_p
  * of two is exact, so answers are equivariant bit for bit, while squares and
  * volumes of the simplex math neither underflow (a 1e-300 problem) nor
  * overflow. Returns the factor applied (1 for problems of ordinary size). */
-double agjk__minkowski_set_scale(agjk__minkowski *md);
+static inline double agjk__minkowski_set_scale(agjk__minkowski *md); /* below */
+/* Its rare part, out of line: converts md to the power of two that brings
+ * `size` (outside [2^-100, 2^100]) to about 1. */
+double agjk__minkowski_rescale_extreme(agjk__minkowski *md, double size);
 
 /* The rare paths of agjk__minkowski_support, out of line: a direction outside
  * the safe range is brought to unit size; raw support points beyond raw_limit
@@ -70,6 +73,20 @@ double agjk__minkowski_set_scale(agjk__minkowski *md);
  * or make the scale shrink (md->rescaled records the factor). */
 agjk_vec3 agjk__minkowski_rescue_direction(const agjk__minkowski *md, agjk_vec3 d);
 void agjk__minkowski_rescue_points(agjk__minkowski *md, agjk_vec3 *pa, agjk_vec3 *pb);
+
+static inline double agjk__minkowski_set_scale(agjk__minkowski *md) {
+    double size = md->magnitude;
+    if (md->translation_size > size) size = md->translation_size;
+    if (md->margin > size) size = md->margin;
+    /* The scale is 1 here, or below 1 after a shrink by the first support
+     * (which set raw_limit already): either way directions may now be as
+     * small as AGJK__DIRECTION_MIN. */
+    md->direction_min = AGJK__DIRECTION_MIN;
+    /* Problems of ordinary size stay in the caller's units (no cost, and power-
+     * of-two scalings commute with rounding anyway); only extreme ones move. */
+    if (!(size > 0.0) || (size >= 0x1p-100 && size <= 0x1p100)) return 1.0;
+    return agjk__minkowski_rescale_extreme(md, size);
+}
 
 /* Records a larger magnitude (solver units) and the noise that follows. */
 static inline void agjk__minkowski_grow(agjk__minkowski *md, double magnitude) {

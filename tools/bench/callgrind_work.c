@@ -9,7 +9,8 @@
  *
  *   agjk-callgrind-work agjk|coal WORKLOAD [PROBLEMS]
  *
- * WORKLOAD: ellipsoids-close, boxes-close, hulls-close (GJK, distance),
+ * WORKLOAD: ellipsoids-close, boxes-close, hulls-close, ellipsoids-overlapping
+ * (GJK, distance),
  * ellipsoids-distant, boxes-distant, hulls-distant (GJK, Boolean); hulls: 141
  * points on an ellipsoid, hill climbing on the Qhull hull's vertex graph (agjk)
  * and Coal's own graph of the same hull, as in the benchmark. stdout: one line per query, "query I
@@ -35,6 +36,7 @@ static const workload workloads[] = {
     {"ellipsoids-close", BENCH_ELLIPSOIDS, BENCH_CLOSE, BENCH_DISTANCE, 0},
     {"boxes-close", BENCH_BOXES, BENCH_CLOSE, BENCH_DISTANCE, 0},
     {"hulls-close", BENCH_HULLS, BENCH_CLOSE, BENCH_DISTANCE, 141},
+    {"ellipsoids-overlapping", BENCH_ELLIPSOIDS, BENCH_OVERLAPPING, BENCH_DISTANCE, 0},
     {"ellipsoids-distant", BENCH_ELLIPSOIDS, BENCH_DISTANT, BENCH_BOOLEAN, 0},
     {"boxes-distant", BENCH_BOXES, BENCH_DISTANT, BENCH_BOOLEAN, 0},
     {"hulls-distant", BENCH_HULLS, BENCH_DISTANT, BENCH_BOOLEAN, 141},
@@ -152,7 +154,7 @@ int main(int argc, char **argv) {
                      strcmp(argv[1], "time") != 0)) {
         fprintf(stderr, "usage: agjk-callgrind-work agjk|coal WORKLOAD [PROBLEMS]\n"
                         "       agjk-callgrind-work time WORKLOAD [PROBLEMS [REPS]]\n"
-                        "WORKLOAD: ellipsoids-close boxes-close hulls-close "
+                        "WORKLOAD: ellipsoids-close boxes-close hulls-close ellipsoids-overlapping "
                         "ellipsoids-distant boxes-distant hulls-distant\n");
         return 2;
     }
