@@ -150,6 +150,172 @@ static int momentum_stalls(const solver *sv, double g, int k) {
     return g <= scaled;
 }
 
+/* Certified overlap of the cores: the origin deep inside the hull of
+ * computed points of D.
+ *
+ * The computed points are within sqrt(3) noise of exact points of D (noise:
+ * agjk__minkowski). If the origin lies deeper than that inside their hull
+ * (every plane through it has computed points more than that far on both
+ * sides), no plane can separate it from the exact points' hull, which D
+ * contains. Depths are tested through facet normals c = e1 x e2 of computed
+ * points, with h = <p, c> = depth |c|. Their rounding is charged too: each
+ * component of c is off by at most about 3 eps times the same component of
+ * |e1| x |e2| taken with absolute values (call that vector k, |k| >= |c|),
+ * and h by |p| times that plus 3 eps |p| |c|; with eps |p| <= noise / 4 the
+ * depth error is below noise |k| / |c|. With the points' sqrt(3) noise,
+ * h > 3 noise |k| suffices (tested squared): a depth of 3 noise for a facet
+ * whose normal is computed accurately, more when cancellation blurs it. */
+#define DEPTH_FACTOR 3.0
+
+/* h^2 > (DEPTH_FACTOR noise |k|)^2 with h > 0, k as above. */
+static int beyond_rounding(double h, agjk_vec3 e1, agjk_vec3 e2, double noise) {
+    agjk_vec3 k = v3(fabs(e1.y * e2.z) + fabs(e1.z * e2.y), fabs(e1.z * e2.x) + fabs(e1.x * e2.z),
+                     fabs(e1.x * e2.y) + fabs(e1.y * e2.x));
+    double limit = DEPTH_FACTOR * noise;
+    return h > 0.0 && h * h > limit * limit * v3_norm2(k);
+}
+
+/* The tetrahedron w[0..3] (the common end of an overlapping query): the
+ * origin beyond each face plane by the margin above. Returns the mask of the
+ * faces that fail (bit f: the face without w[f]), 0 when certified.
+ *
+ * For a face (p, q, r), h = <-p, (q - p) x (r - p)> = -det(p, q, r). The
+ * faces are listed with one orientation, so the four h add up to the
+ * tetrahedron's signed volume (times 6) and its sign turns them all inwards.
+ * A coarse bound first (|k|^2 <= 2 |e1|^2 |e2|^2 <= 2 (4 max |w_i|^2)^2,
+ * and the determinant's own rounding, a few eps |w|^3 <= noise |w|^2, well
+ * inside it) settles the usual case (a problem near the origin, tiny noise)
+ * with no face normal at all. */
+static unsigned shallow_faces(const agjk_vec3 w[4], double noise) {
+    static const int face[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
+    double h[4], big = 0.0;
+    for (int f = 0; f < 4; ++f) {
+        h[f] = -v3_dot(w[face[f][0]], v3_cross(w[face[f][1]], w[face[f][2]]));
+        double ww = v3_norm2(w[f]);
+        if (ww > big) big = ww;
+    }
+    double sign = h[0] + h[1] + h[2] + h[3] < 0.0 ? -1.0 : 1.0;
+    double coarse = DEPTH_FACTOR * noise * 4.0 * big;
+    coarse = 2.0 * coarse * coarse;
+    unsigned shallow = 0;
+    for (int f = 0; f < 4; ++f) {
+        double hf = sign * h[f];
+        if (hf > 0.0 && hf * hf > coarse) continue;
+        /* Near the bound: h again from the edges, whose rounding the precise
+         * test charges (the determinant's grows with |p| |q| |r|). */
+        agjk_vec3 p = w[face[f][0]];
+        agjk_vec3 e1 = v3_sub(w[face[f][1]], p), e2 = v3_sub(w[face[f][2]], p);
+        hf = -sign * v3_dot(p, v3_cross(e1, e2));
+        if (!beyond_rounding(hf, e1, e2, noise)) shallow |= 1u << f;
+    }
+    return shallow;
+}
+
+/* The same test for any set of points: every triple's plane through the
+ * origin has points beyond the margin on both sides. Returns 1 when so; else
+ * 0 with *shallow the normal of a plane with too little on its side (zero
+ * when the points span no plane at all). */
+static int deep_inside(const agjk_vec3 *p, int n, double noise, agjk_vec3 *shallow) {
+    int planes = 0;
+    *shallow = v3(0.0, 0.0, 0.0);
+    for (int i = 0; i < n; ++i)
+        for (int j = i + 1; j < n; ++j)
+            for (int k = j + 1; k < n; ++k) {
+                agjk_vec3 e1 = v3_sub(p[j], p[i]), e2 = v3_sub(p[k], p[i]);
+                agjk_vec3 c = v3_cross(e1, e2);
+                if (v3_norm2(c) == 0.0) continue;
+                double hi = -INFINITY, lo = INFINITY;
+                for (int m = 0; m < n; ++m) {
+                    double v = v3_dot(c, p[m]);
+                    if (v > hi) hi = v;
+                    if (v < lo) lo = v;
+                }
+                if (!beyond_rounding(hi, e1, e2, noise)) {
+                    *shallow = c;
+                    return 0;
+                }
+                if (!beyond_rounding(-lo, e1, e2, noise)) {
+                    *shallow = v3_neg(c);
+                    return 0;
+                }
+                ++planes;
+            }
+    return planes > 0;
+}
+
+/* Points certify_overlap may hold: the simplex and up to 4 more supports. */
+#define CERTIFY_POINTS 8
+
+/* The origin in the active set, but not certified by it: x = 0 on a segment
+ * or a triangle (boxes aligned with each other often end so), or a
+ * tetrahedron with the origin near a face. More supports, beyond the simplex
+ * where the origin is shallow (across a segment, on both sides of a triangle,
+ * beyond a tetrahedron's shallow faces, then beyond any plane the test finds
+ * shallow), until the test passes, a support shows D itself is shallow there
+ * (the origin is near its boundary: touching to rounding), or there is room
+ * for no more points. Rare, so out of line; at most CERTIFY_POINTS - 1
+ * supports. Returns 1 when certified (0 also after a bad support or a
+ * rescale: the caller then answers what it has). */
+static AGJK__NOINLINE AGJK__COLD int certify_overlap(solver *sv, agjk__solve_output *out) {
+    agjk_vec3 p[CERTIFY_POINTS], dirs[4];
+    int n = sv->count, nd = 0;
+    double noise = sv->md->noise, scale = sv->md->scale;
+    for (int i = 0; i < n; ++i) p[i] = sv->w[i];
+    if (n == 2) {
+        /* Two directions across the segment. */
+        agjk_vec3 u = v3_sub(p[1], p[0]);
+        agjk_vec3 ax = fabs(u.x) <= fabs(u.y) && fabs(u.x) <= fabs(u.z) ? v3(1.0, 0.0, 0.0)
+                       : fabs(u.y) <= fabs(u.z)                          ? v3(0.0, 1.0, 0.0)
+                                                                         : v3(0.0, 0.0, 1.0);
+        agjk_vec3 v1 = v3_cross(u, ax), v2 = v3_cross(u, v1);
+        dirs[nd++] = v1;
+        dirs[nd++] = v3_neg(v1);
+        dirs[nd++] = v2;
+        dirs[nd++] = v3_neg(v2);
+    } else if (n == 3) {
+        agjk_vec3 c = v3_cross(v3_sub(p[1], p[0]), v3_sub(p[2], p[0]));
+        dirs[nd++] = c;
+        dirs[nd++] = v3_neg(c);
+    } else if (n == 4) {
+        /* Beyond each shallow face: its outward normal. */
+        static const int face[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
+        unsigned shallow = shallow_faces(p, noise);
+        for (int f = 0; f < 4; ++f) {
+            if (!(shallow & (1u << f))) continue;
+            agjk_vec3 q = p[face[f][0]];
+            agjk_vec3 c = v3_cross(v3_sub(p[face[f][1]], q), v3_sub(p[face[f][2]], q));
+            dirs[nd++] = v3_dot(c, v3_sub(p[f], q)) > 0.0 ? v3_neg(c) : c;
+        }
+    } else {
+        return 0; /* x = 0 is a support point: the origin is on the boundary of D */
+    }
+    for (int round = 0; n < CERTIFY_POINTS; ++round) {
+        agjk_vec3 u;
+        if (round < nd) {
+            u = dirs[round];
+        } else if (deep_inside(p, n, noise, &u)) {
+            return 1;
+        }
+        if (v3_maxabs(u) == 0.0 || !v3_isfinite(u)) return 0;
+        /* support() minimises <d, .>: d = -u for the farthest point along u. */
+        agjk_vec3 d = v3_neg(u);
+        agjk__vertex s;
+        support_rare(sv, &d, &s);
+        ++out->support_calls;
+        if (sv->md->bad_support || sv->md->scale != scale) return 0;
+        if (round >= nd) {
+            /* Nothing beyond the shallow plane: D is shallow there too. */
+            double best = -INFINITY;
+            for (int i = 0; i < n; ++i)
+                if (v3_dot(u, p[i]) > best) best = v3_dot(u, p[i]);
+            if (!(v3_dot(u, s.w) > best)) return 0;
+        }
+        p[n++] = s.w;
+    }
+    agjk_vec3 unused;
+    return deep_inside(p, n, noise, &unused);
+}
+
 /* Adds s to the active set and projects the origin onto its hull, keeping only
  * the vertices with positive weight (Alg. 4 line 7 / Alg. 5). Returns 1 when
  * the origin is enclosed by a full tetrahedron. */
@@ -393,8 +559,16 @@ void agjk__solve(agjk__minkowski *md, const agjk__solve_input *in, agjk__solve_o
                 warm = warm_enclosed = 0;
             }
             if (warm_enclosed) {
-                out->outcome = AGJK__INTERSECTING;
-                break;
+                /* Cached points carry up to 8 noise more (warm_consistent). */
+                if (shallow_faces(sv.w, 9.0 * md->noise) == 0 ||
+                    md->margin > 13.0 * md->noise) {
+                    out->outcome = AGJK__INTERSECTING;
+                    break;
+                }
+                /* Not deep enough to certify: on cold from this support. */
+                sv.count = 0;
+                have_x = 0;
+                warm = warm_enclosed = 0;
             }
         }
         /* Adaptive method: every support plane is a lower bound (direction.c),
@@ -458,18 +632,41 @@ void agjk__solve(agjk__minkowski *md, const agjk__solve_input *in, agjk__solve_o
         have_x = 1;
         out->gap_valid = 0;
         double margin = md->margin, noise = md->noise;
-        /* Enclosed, or the core distance ||x|| below the margins (rounding
-         * included): sqrt(x2) + noise < margin, squared. */
-        if (enclosed || x_new2 == 0.0 ||
-            (margin > noise && x_new2 < (margin - noise) * (margin - noise))) {
+        /* The cores overlap, certified: the computed tetrahedron holds the
+         * origin deeper than the rounding of its vertices (or nothing was
+         * rounded at all). Otherwise an enclosure, or an x = 0 on a face or an
+         * edge, only shows the cores within about 2 noise of each other:
+         * ||x*|| <= ||x|| + 2 noise, which the margins may still cover. */
+        int at_origin = enclosed || x_new2 == 0.0;
+        int core_overlap = 0;
+        if (at_origin && in->method != AGJK_METHOD_FRANK_WOLFE) {
+            core_overlap = noise == 0.0 ||
+                           (enclosed && shallow_faces(sv.w, noise) == 0) ||
+                           certify_overlap(&sv, out);
+            if (md->bad_support) {
+                out->outcome = AGJK__BAD_SUPPORT;
+                break;
+            }
+        } else if (at_origin) {
+            core_overlap = noise == 0.0; /* plain FW keeps no simplex to certify with */
+        }
+        double core_bound2 = at_origin ? 4.0 * noise * noise : x_new2;
+        if (core_overlap ||
+            (margin > noise && core_bound2 < (margin - noise) * (margin - noise))) {
             out->outcome = AGJK__INTERSECTING;
             break;
         }
         /* x is zero to rounding (||x|| <= noise): the cores touch or overlap
          * within what double precision can tell (plain FW creeps towards such
          * an x forever). */
-        if (x_new2 <= noise * noise) {
+        if (at_origin || x_new2 <= noise * noise) {
             out->outcome = AGJK__AT_ROUNDING;
+            if (at_origin) {
+                /* No direction to certify along (below): x = 0 stands, with
+                 * the rounding allowance of query.c as its bound. */
+                out->gap = 0.0;
+                out->gap_valid = 1;
+            }
             break;
         }
         if (no_progress) {

@@ -46,7 +46,7 @@ summary=$out/summary.md
     echo "|---|---|---|---|---|---|---|---|---|"
 } >"$summary"
 
-for w in ellipsoids-close boxes-close hulls-close ellipsoids-distant boxes-distant hulls-distant; do
+for w in ellipsoids-close boxes-close hulls-close ellipsoids-overlapping ellipsoids-distant boxes-distant hulls-distant; do
     for lib in $libs; do
         dir=$out/$w-$lib
         rm -rf "$dir"
