@@ -9,9 +9,10 @@
  * - NOT_CONVERGED carries its stop reason (iteration cap, relative accuracy
  *   below double precision), every other status AGJK_STOP_NONE;
  * - "intersecting" only when certified beyond the rounding of the points of
- *   D: a 1e9 ... 1e12 long needle passing a thin box by 1e-6 ... 1e-2, where
- *   that rounding (about 1e-7 ... 1e-3) swamps the gap, gets no false
- *   overlap, while deep overlaps of the same pairs are still certified. */
+ *   D: a 1e9 ... 1e12 long needle passing a thin box by 1e-8 ... 1, where that
+ *   rounding (about 1e-7 ... 1e-3) often swamps the gap, gets no false
+ *   overlap (checked against the exact distance in quadruple precision),
+ *   while deep overlaps of the same pairs are still certified. */
 #include <float.h>
 #include <math.h>
 #include <stdio.h>
