@@ -28,6 +28,16 @@ static void set_vertex(int i, int n, double lambda[4], agjk_vec3 p, agjk_vec3 *p
     *point = p;
 }
 
+/* The foot p of the origin on a segment along e is orthogonal to e, but the
+ * computed one is off along e by a few ulps of the segment's ends: nothing
+ * when they are near the origin, everything for a needle (ends 1e9 away, foot
+ * 1e-2 away), whose next support direction would then tilt along the needle
+ * and fetch the same end again (GJK stalls). Removing p's component along e
+ * leaves an error of a few ulps of |p| itself. */
+static inline agjk_vec3 segment_cleanup(agjk_vec3 p, agjk_vec3 e, double ee) {
+    return v3_sub(p, v3_scale(e, v3_dot(p, e) / ee));
+}
+
 /* Segment p[i]-p[j] inside an n-point simplex. */
 static unsigned project_segment(const agjk_vec3 *p, int n, int i, int j, double lambda[4],
                                 agjk_vec3 *point) {
@@ -51,7 +61,7 @@ static unsigned project_segment(const agjk_vec3 *p, int n, int i, int j, double 
     for (int k = 0; k < n; ++k) lambda[k] = 0.0;
     lambda[i] = 1.0 - t;
     lambda[j] = t;
-    *point = v3_lerp2(a, 1.0 - t, b, t);
+    *point = segment_cleanup(v3_lerp2(a, 1.0 - t, b, t), e, ee);
     return (1u << i) | (1u << j);
 }
 
@@ -316,13 +326,14 @@ static unsigned vertex_output(const agjk_vec3 *w, int n, double lambda[4], agjk_
  * b = w[ib] an older one, u = b - a, uu = |u|^2, when it lies strictly
  * inside: its weights on a and b and the point. Measured from b with the
  * weight of a computed directly, exactly as the exhaustive projection does
- * (bit for bit: the solver's path does not depend on which one projects);
- * the error of the point is a few ulps of |b|. Returns 0 otherwise. */
+ * (bit for bit: the solver's path does not depend on which one projects),
+ * with the same cleanup along the segment (segment_cleanup). Returns 0
+ * otherwise. */
 static inline int segment_foot(const agjk_vec3 *w, int ia, int ib, agjk_vec3 u, double uu,
                                double *wa, double *wb, agjk_vec3 *p) {
     agjk_vec3 b = w[ib];
     double s = v3_dot(b, u) / uu; /* p = b + s (a - b) */
-    *p = v3_lerp2(b, 1.0 - s, w[ia], s);
+    *p = segment_cleanup(v3_lerp2(b, 1.0 - s, w[ia], s), u, uu);
     *wa = s;
     *wb = 1.0 - s;
     return s > 0.0 && s < 1.0; /* also false for uu = 0 */

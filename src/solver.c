@@ -246,9 +246,10 @@ static int deep_inside(const agjk_vec3 *p, int n, double noise, agjk_vec3 *shall
 /* Points certify_overlap may hold: the simplex and up to 4 more supports. */
 #define CERTIFY_POINTS 8
 
-/* The origin in the active set, but not certified by it: x = 0 on a segment
- * or a triangle (boxes aligned with each other often end so), or a
- * tetrahedron with the origin near a face. More supports, beyond the simplex
+/* The origin in the active set, or within rounding of it, but not certified
+ * by it: x = 0 on a segment or a triangle (boxes aligned with each other
+ * often end so), ||x|| <= noise, or a tetrahedron with the origin near a
+ * face. More supports, beyond the simplex
  * where the origin is shallow (across a segment, on both sides of a triangle,
  * beyond a tetrahedron's shallow faces, then beyond any plane the test finds
  * shallow), until the test passes, a support shows D itself is shallow there
@@ -639,8 +640,10 @@ void agjk__solve(agjk__minkowski *md, const agjk__solve_input *in, agjk__solve_o
          * ||x*|| <= ||x|| + 2 noise, which the margins may still cover. */
         int at_origin = enclosed || x_new2 == 0.0;
         int core_overlap = 0;
-        if (at_origin && in->method != AGJK_METHOD_FRANK_WOLFE) {
-            core_overlap = noise == 0.0 ||
+        if ((at_origin || x_new2 <= noise * noise) && in->method != AGJK_METHOD_FRANK_WOLFE) {
+            /* The origin in the simplex, or within rounding of it: certified
+             * if it lies deep inside the points (with a few more if needed). */
+            core_overlap = (at_origin && noise == 0.0) ||
                            (enclosed && shallow_faces(sv.w, noise) == 0) ||
                            certify_overlap(&sv, out);
             if (md->bad_support) {

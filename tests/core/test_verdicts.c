@@ -299,12 +299,9 @@ START_TEST(needles_get_no_false_overlap) {
     }
     TU_ENSURE(wrong == 0, "%d wrong verdicts in %d pairs (%d apart)", wrong, pairs, separated);
     TU_ENSURE(outside == 0, "%d distance intervals miss the exact distance", outside);
-    /* Deep overlaps stay decided. Not all: on 10-15% of these needles GJK
-     * itself stalls short of the origin (its projection onto a triangle with
-     * two vertices 1e9 apart and one near the origin loses the sliver's
-     * width), and the query ends with an honest contact-within-tolerance
-     * interval that holds 0. */
-    TU_ENSURE(deep > 100 && deep_certified >= 0.8 * deep, "%d of %d deep overlaps certified",
+    /* Deep overlaps stay decided: 272 of 273 with seed 31 (the last one ends
+     * as an honest contact within tolerance, its interval holding 0). */
+    TU_ENSURE(deep > 100 && deep_certified >= 0.95 * deep, "%d of %d deep overlaps certified",
               deep_certified, deep);
     fprintf(stderr, "needles: %d pairs (%d apart), 0 wrong verdicts, %d of %d deep overlaps certified\n",
             pairs, separated, deep_certified, deep);
