@@ -106,22 +106,20 @@ static inline void agjk__minkowski_support(agjk__minkowski *md, agjk_vec3 d, agj
     md->support_a(md->data_a, &na, &pa, &md->hint_a);
     md->support_b(md->data_b, &db, &pb, &md->hint_b);
     /* One test covers NaN, Inf, AGJK_MAX_COORDINATE and the solver's size
-     * limit: the 1-norm propagates NaN and bounds every coordinate. */
+     * limit: the 1-norm propagates NaN and bounds every coordinate. The
+     * max-norms come from the same absolute values. */
     double l1 = v3_norm1(pa) + v3_norm1(pb);
+    double raw = v3_maxabs(pa) + v3_maxabs(pb);
     if (!(l1 <= md->raw_limit)) {
         agjk__minkowski_rescue_points(md, &pa, &pb);
-        l1 = v3_norm1(pa) + v3_norm1(pb);
+        raw = v3_maxabs(pa) + v3_maxabs(pb);
     }
     if (md->scale != 1.0) {
         pa = v3_scale(pa, md->scale); /* exact: a power of two */
         pb = v3_scale(pb, md->scale);
-        l1 *= md->scale;
+        raw *= md->scale;
     }
-    /* The max-norm magnitude is at most the 1-norm: only a larger 1-norm can grow it. */
-    if (l1 > md->magnitude) {
-        double raw = v3_maxabs(pa) + v3_maxabs(pb);
-        if (raw > md->magnitude) agjk__minkowski_grow(md, raw);
-    }
+    if (raw > md->magnitude) agjk__minkowski_grow(md, raw);
     agjk_vec3 b = v3_add(m3_mul(&md->rotation[0][0], pb), md->translation);
     out->w = v3_sub(pa, b);
     out->a = pa;

@@ -6,9 +6,9 @@
 static void box_support(const void *data, const agjk_vec3 *direction, agjk_vec3 *out, int *hint) {
     const agjk_box *b = (const agjk_box *)data;
     (void)hint;
-    *out = v3(support_sign(direction->x) * b->half_extents.x,
-              support_sign(direction->y) * b->half_extents.y,
-              support_sign(direction->z) * b->half_extents.z);
+    *out = v3(signed_extent(b->half_extents.x, direction->x),
+              signed_extent(b->half_extents.y, direction->y),
+              signed_extent(b->half_extents.z, direction->z));
 }
 
 agjk_status agjk_shape_box(agjk_shape *shape, const agjk_box *box) {

@@ -6,7 +6,7 @@ static void segment_support(const void *data, const agjk_vec3 *direction, agjk_v
                             int *hint) {
     const agjk_capsule *c = (const agjk_capsule *)data;
     (void)hint;
-    *out = v3(0.0, 0.0, support_sign(direction->z) * c->half_height);
+    *out = v3(0.0, 0.0, signed_extent(c->half_height, direction->z));
 }
 
 agjk_status agjk_shape_capsule(agjk_shape *shape, const agjk_capsule *capsule) {

@@ -9,7 +9,7 @@ static void cylinder_support(const void *data, const agjk_vec3 *direction, agjk_
     (void)hint;
     agjk_vec3 radial = v3_normalize(v3(direction->x, direction->y, 0.0));
     *out = v3(c->radius * radial.x, c->radius * radial.y,
-              support_sign(direction->z) * c->half_height);
+              signed_extent(c->half_height, direction->z));
 }
 
 agjk_status agjk_shape_cylinder(agjk_shape *shape, const agjk_cylinder *cylinder) {
