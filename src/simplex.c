@@ -22,6 +22,10 @@
 /* Relative size below which an area or volume is treated as zero. */
 #define DEGENERATE_RELATIVE (64.0 * DBL_EPSILON)
 
+/* Worst-case error of a triangle's foot, in ulps of its largest vertex,
+ * beyond which the foot is not used (project_triangle). */
+#define SLIVER_ULPS 4096.0
+
 static void set_vertex(int i, int n, double lambda[4], agjk_vec3 p, agjk_vec3 *point) {
     for (int j = 0; j < n; ++j) lambda[j] = 0.0;
     lambda[i] = 1.0;
@@ -36,6 +40,13 @@ static void set_vertex(int i, int n, double lambda[4], agjk_vec3 p, agjk_vec3 *p
  * leaves an error of a few ulps of |p| itself. */
 static inline agjk_vec3 segment_cleanup(agjk_vec3 p, agjk_vec3 e, double ee) {
     return v3_sub(p, v3_scale(e, v3_dot(p, e) / ee));
+}
+
+/* |u| x |v| with absolute values: bounds the rounding of u x v, component by
+ * component. */
+static agjk_vec3 abs_cross(agjk_vec3 u, agjk_vec3 v) {
+    return v3(fabs(u.y * v.z) + fabs(u.z * v.y), fabs(u.z * v.x) + fabs(u.x * v.z),
+              fabs(u.x * v.y) + fabs(u.y * v.x));
 }
 
 /* Segment p[i]-p[j] inside an n-point simplex. */
@@ -101,26 +112,45 @@ static AGJK__COLD unsigned project_triangle(const agjk_vec3 *p, int n, int i, in
     /* The normal (b-a) x (c-a) = (c-b) x (a-b) = (a-c) x (b-c); its rounding error
      * is about eps |e1| |e2| for the two edges used, so use the two shortest:
      * with one far vertex, the long edges would cancel catastrophically. */
-    agjk_vec3 nrm;
+    agjk_vec3 nrm, bound; /* bound: abs_cross of the same two edges */
     double scale;
     if (lbc >= lab && lbc >= lca) {
         nrm = v3_cross(ab, v3_neg(ca));
+        bound = abs_cross(ab, ca);
         scale = lab * lca;
     } else if (lca >= lab) {
         nrm = v3_cross(bc, v3_neg(ab));
+        bound = abs_cross(bc, ab);
         scale = lbc * lab;
     } else {
         nrm = v3_cross(ca, v3_neg(bc));
+        bound = abs_cross(ca, bc);
         scale = lca * lbc;
     }
     double nn = v3_norm2(nrm);
     double edge_sign[3] = {-1.0, -1.0, -1.0}; /* <= 0: try the edge opposite that vertex */
-    if (nn > DEGENERATE_RELATIVE * DEGENERATE_RELATIVE * scale) {
+    /* The vertex nearest the origin, and the largest one. */
+    double na = v3_norm2(a), nb = v3_norm2(b), nc = v3_norm2(c);
+    agjk_vec3 v = a;
+    double vv = na, far = na;
+    if (nb < vv) { v = b; vv = nb; }
+    if (nc < vv) { v = c; vv = nc; }
+    if (nb > far) far = nb;
+    if (nc > far) far = nc;
+    /* Each component of the normal is off by a few eps times the same
+     * component of |e1| x |e2| taken with absolute values (bound), so its
+     * direction by at most about eps |bound| / |n|, and the foot below by that
+     * times |v|. Beyond SLIVER_ULPS ulps of the largest vertex (a sliver far
+     * from the origin, nearly collinear with it: the ends of a needle and a
+     * point beside its middle, whose foot came out 1e-7 off where the whole
+     * answer was 1e-7), the plane is not known well enough and the edges
+     * decide, as for a degenerate triangle. (The bound is a worst case, often
+     * 100 times the actual error: thin triangles far inside it keep their
+     * foot.) */
+    if (nn > DEGENERATE_RELATIVE * DEGENERATE_RELATIVE * scale &&
+        v3_norm2(bound) * vv <= nn * far * (SLIVER_ULPS * SLIVER_ULPS)) {
         /* Foot of the origin on the plane, from the vertex nearest the origin
          * (the error of <n, v> grows with |v|). */
-        agjk_vec3 v = a;
-        if (v3_norm2(b) < v3_norm2(v)) v = b;
-        if (v3_norm2(c) < v3_norm2(v)) v = c;
         agjk_vec3 foot = v3_scale(nrm, v3_dot(nrm, v) / nn);
         /* Barycentric coordinates of the foot from signed areas of the
          * sub-triangles, measured from the foot itself (Montanari et al. 2017):
