@@ -96,7 +96,8 @@ static inline void agjk__minkowski_grow(agjk__minkowski *md, double magnitude) {
 
 /* s = argmin_{s in D} <d, s> = S_A(-d) - S_B(d) (paper eq. 7-8), d in A's frame,
  * non-zero and finite, with the points of A and B it came from. */
-static inline void agjk__minkowski_support(agjk__minkowski *md, agjk_vec3 d, agjk__vertex *out) {
+static AGJK__ALWAYS_INLINE void agjk__minkowski_support(agjk__minkowski *md, agjk_vec3 d,
+                                                         agjk__vertex *out) {
     double dm = v3_maxabs(d);
     if (!(dm >= md->direction_min && dm <= AGJK__DIRECTION_MAX))
         d = agjk__minkowski_rescue_direction(md, d);

@@ -66,7 +66,7 @@ static AGJK__NOINLINE void follow_rescale(solver *sv, agjk_vec3 *d) {
 /* One Minkowski support in direction d (s in the current units): inline for
  * the loop's own call, out of line for the rare ones (momentum switch-off,
  * final certification), so that the support path is expanded once. */
-static inline void support(solver *sv, agjk_vec3 *d, agjk__vertex *s) {
+static AGJK__ALWAYS_INLINE void support(solver *sv, agjk_vec3 *d, agjk__vertex *s) {
     agjk__minkowski_support(sv->md, *d, s);
     if (sv->md->rescaled != 1.0) follow_rescale(sv, d);
 }

@@ -11,13 +11,16 @@
 #include "agjk/types.h"
 
 /* Keep a rarely taken path out of line, or compile it for size (GCC and
- * clang optimise a cold function for size and move it away from hot code). */
+ * clang optimise a cold function for size and move it away from hot code);
+ * force a hot one inline where the compiler's size heuristics would not. */
 #if defined(__GNUC__)
 #define AGJK__NOINLINE __attribute__((noinline))
 #define AGJK__COLD __attribute__((cold))
+#define AGJK__ALWAYS_INLINE inline __attribute__((always_inline))
 #else
 #define AGJK__NOINLINE
 #define AGJK__COLD
+#define AGJK__ALWAYS_INLINE inline
 #endif
 
 static inline agjk_vec3 v3(double x, double y, double z) {

@@ -54,13 +54,13 @@ for w in ellipsoids-close boxes-close hulls-close ellipsoids-overlapping ellipso
         "$driver" "$lib" "$w" "$problems" >"$dir/queries.txt"
         LD_BIND_NOW=1 valgrind --tool=callgrind --collect-atstart=no \
             --toggle-collect="measured_$lib" --dump-after="measured_$lib" \
-            --compress-strings=no --compress-pos=no \
+            --compress-strings=no --compress-pos=no --dump-instr=yes \
             --callgrind-out-file="$dir/callgrind.out.%p" \
             "$driver" "$lib" "$w" "$problems" >"$dir/queries-valgrind.txt" 2>"$dir/valgrind.log"
         cmp -s "$dir/queries.txt" "$dir/queries-valgrind.txt" ||
             { echo "callgrind.sh: $w $lib answered differently under valgrind" >&2; exit 1; }
         # shellcheck disable=SC2046
-        "$python" "$here/callgrind_split.py" "$lib" "$dir/queries.txt" \
+        "$python" "$here/callgrind_split.py" "$lib" "$dir/queries.txt" --binary "$driver" \
             $(ls "$dir"/callgrind.out.*.* | sort -t. -k4 -n) >"$dir/split.json"
         "$python" - "$w" "$dir/split.json" >>"$summary" <<'PY'
 import json, sys
