@@ -91,18 +91,25 @@ static int separates(const agjk__minkowski *md, agjk_vec3 d, agjk_vec3 w) {
 /* Checks a fresh support s in direction d: a bad callback output ends the
  * query, and in Boolean mode so does a separating plane (Alg. 2). Returns 1
  * when the loop must stop, with out->outcome set. */
-static int support_ends_query(const solver *sv, agjk_vec3 d, const agjk__vertex *s,
-                              agjk__solve_output *out) {
+static AGJK__NOINLINE int support_ends_query_slow(const solver *sv, agjk_vec3 d,
+                                                  const agjk__vertex *s, agjk__solve_output *out) {
     if (sv->md->bad_support) {
         out->outcome = AGJK__BAD_SUPPORT;
         return 1;
     }
-    if (sv->in->boolean_mode && separates(sv->md, d, s->w)) {
+    if (separates(sv->md, d, s->w)) {
         out->outcome = AGJK__SEPARATED_EARLY;
         out->direction = d;
         return 1;
     }
     return 0;
+}
+
+/* Inline, the common case (distance mode, a good support) is one test. */
+static inline int support_ends_query(const solver *sv, agjk_vec3 d, const agjk__vertex *s,
+                                     agjk__solve_output *out) {
+    if (!(sv->md->bad_support | sv->in->boolean_mode)) return 0;
+    return support_ends_query_slow(sv, d, s, out);
 }
 
 /* Whether a gap g at the current iterate meets the tolerance: AGJK__CONVERGED
@@ -317,6 +324,14 @@ static AGJK__NOINLINE AGJK__COLD int certify_overlap(solver *sv, agjk__solve_out
     return deep_inside(p, n, noise, &unused);
 }
 
+/* For each support mask of fewer than four vertices: the kept indices in
+ * order, padded with the last one (so that every entry is a kept vertex),
+ * and their count. */
+static const unsigned char support_order[16][3] = {
+    {0, 0, 0}, {0, 0, 0}, {1, 1, 1}, {0, 1, 1}, {2, 2, 2}, {0, 2, 2}, {1, 2, 2}, {0, 1, 2},
+    {3, 3, 3}, {0, 3, 3}, {1, 3, 3}, {0, 1, 3}, {2, 3, 3}, {0, 2, 3}, {1, 2, 3}, {0, 1, 2}};
+static const unsigned char support_size[16] = {0, 1, 1, 2, 1, 2, 2, 3, 1, 2, 2, 3, 2, 3, 3, 4};
+
 /* Adds s to the active set and projects the origin onto its hull, keeping only
  * the vertices with positive weight (Alg. 4 line 7 / Alg. 5). Returns 1 when
  * the origin is enclosed by a full tetrahedron. */
@@ -335,20 +350,22 @@ static int update_simplex(solver *sv, const agjk__vertex *s, agjk_vec3 *x) {
         sv->count = 4;
         return 1;
     }
-    int kept = 0;
-    for (int i = 0; i < n; ++i) {
-        if (!(mask & (1u << i))) continue;
-        if (kept != i) {
-            sv->w[kept] = sv->w[i];
-            if (sv->in->keep_points) {
-                sv->a[kept] = sv->a[i];
-                sv->b[kept] = sv->b[i];
-            }
-        }
-        sv->lambda[kept] = l[i];
-        ++kept;
+    /* Keep the support set in index order: the kept indices from a table
+     * and three slots always written (a 4-vertex set returned above), rather
+     * than a test and a branch per vertex. Forward copies with source >=
+     * destination, so in place is safe. */
+    const unsigned char *from = support_order[mask & 0xFu];
+    for (int i = 0; i < 3; ++i) {
+        sv->w[i] = sv->w[from[i]];
+        sv->lambda[i] = l[from[i]];
     }
-    sv->count = kept;
+    if (sv->in->keep_points) {
+        for (int i = 0; i < 3; ++i) {
+            sv->a[i] = sv->a[from[i]];
+            sv->b[i] = sv->b[from[i]];
+        }
+    }
+    sv->count = support_size[mask & 0xFu];
     return 0;
 }
 
