@@ -26,31 +26,31 @@
 #define MAX_VERTICES AGJK_EPA_MAX_VERTICES
 #define MAX_FACES (2 * AGJK_EPA_MAX_VERTICES)
 
+/* A face's neighbours are coded 4 * face + edge: the face across edge i (from
+ * v[i] to v[(i + 1) % 3]) and the index of the same edge in it. */
+#define ADJ(face, edge) (4 * (face) + (edge))
+#define ADJ_FACE(code) ((code) >> 2)
+#define ADJ_EDGE(code) ((code) & 3)
+
 typedef struct epa_face {
-    int v[3];     /* vertex indices, counter-clockwise seen from outside */
-    int adj[3];   /* face across edge i, from v[i] to v[(i + 1) % 3] */
-    int adje[3];  /* index of that edge in face adj[i] */
     agjk_vec3 n;  /* unit outward normal */
     double dist;  /* offset <n, p> of the face's plane */
     double err;   /* rounding allowance on dist */
-    int alive;
-    int stamp;    /* insertion that last classified the face */
-    int visible;  /* classification of that insertion */
+    int v[3];     /* vertex indices, counter-clockwise seen from outside */
+    int adj[3];   /* ADJ(face, edge) across edge i */
+    int mark;     /* the insertion that found the face visible (stamps only grow) */
 } epa_face;
 
 typedef struct epa_state {
     agjk__minkowski *md;
     agjk__vertex v[MAX_VERTICES];
+    double vmax[MAX_VERTICES];  /* max |w_i| of each vertex (face_plane's rounding) */
+    int vmark[MAX_VERTICES];    /* insert's check that the horizon is simple */
     int nv;
     epa_face f[MAX_FACES];
-    /* The live faces, with dist - err (the lower bound each proves) in a
-     * contiguous array: the nearest face is a tight scan. pos[] locates a
-     * face in it for removal. */
-    int live[MAX_FACES];
+    /* dist - err of each face slot (the lower bound the face proves), +inf for
+     * a free slot: the nearest face is a tight scan of one array. */
     double key[MAX_FACES];
-    int pos[MAX_FACES];
-    int nlive;
-    int start_of[MAX_VERTICES]; /* insert's scratch: horizon edge starting at a vertex, or -1 */
     int nf;                 /* face slots in use, alive or free */
     int free_faces[MAX_FACES];
     int nfree;
@@ -100,6 +100,7 @@ static void follow_rescale(epa_state *st) {
         st->v[i].w = v3_scale(st->v[i].w, f);
         st->v[i].a = v3_scale(st->v[i].a, f);
         st->v[i].b = v3_scale(st->v[i].b, f);
+        st->vmax[i] *= f;
     }
     for (int i = 0; i < st->nextra; ++i) {
         st->extra[i].w = v3_scale(st->extra[i].w, f);
@@ -109,8 +110,8 @@ static void follow_rescale(epa_state *st) {
     for (int i = 0; i < st->nf; ++i) {
         st->f[i].dist *= f;
         st->f[i].err *= f;
+        st->key[i] *= f; /* free slots stay +inf */
     }
-    for (int i = 0; i < st->nlive; ++i) st->key[i] *= f;
     st->upper *= f;
     st->estimate *= f;
     st->lower *= f;
@@ -138,41 +139,32 @@ static int support(epa_state *st, agjk_vec3 n, agjk__vertex *s) {
 /* Plane of the triangle p0 p1 p2: unit normal (right hand), offset, and a
  * rounding allowance on the offset. The computed normal is off the true one by
  * an angle of a few eps |e1| |e2| / |e1 x e2| (cancellation in the cross
- * product of the rounded edges), which moves the offset by that times |p|.
- * Returns 0 for a triangle without a normal. */
-static int face_plane(agjk_vec3 p0, agjk_vec3 p1, agjk_vec3 p2, agjk_vec3 *n, double *dist,
-                      double *err) {
+ * product of the rounded edges), which moves the offset by that times |p|;
+ * r >= max |p_i| of the three points bounds |p|. Returns 0 for a triangle
+ * without a normal. */
+static int face_plane(agjk_vec3 p0, agjk_vec3 p1, agjk_vec3 p2, double r, agjk_vec3 *n,
+                      double *dist, double *err) {
     agjk_vec3 e1 = v3_sub(p1, p0), e2 = v3_sub(p2, p0);
     agjk_vec3 c = v3_cross(e1, e2);
     double len2 = v3_norm2(c);
     if (!(len2 > 0.0) || !isfinite(len2)) return 0;
-    double len = sqrt(len2);
-    *n = v3_scale(c, 1.0 / len);
+    double inv = 1.0 / sqrt(len2);
+    *n = v3_scale(c, inv);
     *dist = v3_dot(*n, p0);
     /* |p| <= sqrt(3) max |p_i|; 1 / sin(angle at p0) = |e1| |e2| / |c|
      * <= (|e1|^2 + |e2|^2) / (2 |c|). */
-    double r = v3_maxabs(p0);
-    if (v3_maxabs(p1) > r) r = v3_maxabs(p1);
-    if (v3_maxabs(p2) > r) r = v3_maxabs(p2);
-    double skew = (v3_norm2(e1) + v3_norm2(e2)) / (2.0 * len);
+    double skew = (v3_norm2(e1) + v3_norm2(e2)) * (0.5 * inv);
     *err = 32.0 * DBL_EPSILON * r * (skew + 1.0);
     return 1; /* finite: solver units keep coordinates below 2^101 */
 }
 
-static void live_add(epa_state *st, int fi) {
-    st->pos[fi] = st->nlive;
-    st->live[st->nlive] = fi;
-    st->key[st->nlive] = st->f[fi].dist - st->f[fi].err;
-    ++st->nlive;
+/* max |w_i| over the vertices of a triangle. */
+static double max3(double a, double b, double c) {
+    double m = a > b ? a : b;
+    return m > c ? m : c;
 }
 
-static void live_remove(epa_state *st, int fi) {
-    int j = st->pos[fi], last = --st->nlive;
-    st->live[j] = st->live[last];
-    st->key[j] = st->key[last];
-    st->pos[st->live[j]] = j;
-}
-
+/* Writes face fi (vertices a b c, plane n dist err) and its key. */
 static void set_face(epa_state *st, int fi, int a, int b, int c, agjk_vec3 n, double dist,
                      double err) {
     epa_face *f = &st->f[fi];
@@ -182,11 +174,12 @@ static void set_face(epa_state *st, int fi, int a, int b, int c, agjk_vec3 n, do
     f->n = n;
     f->dist = dist;
     f->err = err;
-    f->alive = 1;
-    f->stamp = 0;
-    f->visible = 0;
-    live_add(st, fi);
+    f->mark = 0;
+    st->key[fi] = dist - err;
 }
+
+/* A free slot holds no face. */
+static int alive(const epa_state *st, int fi) { return st->key[fi] < INFINITY; }
 
 /* Whether the point w lies beyond face f, by more than its rounding allowance. */
 static int sees(const epa_face *f, agjk_vec3 w) {
@@ -273,108 +266,122 @@ static int tetrahedron_faces(epa_state *st) {
         st->v[1] = st->v[2];
         st->v[2] = t;
     }
+    for (int i = 0; i < 4; ++i) {
+        st->vmax[i] = v3_maxabs(st->v[i].w);
+        st->vmark[i] = 0;
+    }
     /* Face i holds the edges tri[i][e] -> tri[i][e + 1]; adj[i][e] is the face
-     * holding the same edge reversed. */
+     * holding the same edge reversed, and that edge's index in it. */
     static const int tri[4][3] = {{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {2, 0, 3}};
-    static const int adj[4][3] = {{3, 2, 1}, {0, 2, 3}, {0, 3, 1}, {0, 1, 2}};
-    static const int adje[4][3] = {{0, 0, 0}, {2, 2, 1}, {1, 2, 1}, {0, 2, 1}};
+    static const int adj[4][3] = {{ADJ(3, 0), ADJ(2, 0), ADJ(1, 0)},
+                                  {ADJ(0, 2), ADJ(2, 2), ADJ(3, 1)},
+                                  {ADJ(0, 1), ADJ(3, 2), ADJ(1, 1)},
+                                  {ADJ(0, 0), ADJ(1, 2), ADJ(2, 1)}};
     st->nf = 4;
     st->nfree = 0;
-    st->nlive = 0;
     for (int i = 0; i < 4; ++i) {
+        const int *t = tri[i];
         agjk_vec3 n;
         double d, err;
-        if (!face_plane(st->v[tri[i][0]].w, st->v[tri[i][1]].w, st->v[tri[i][2]].w, &n, &d, &err))
+        if (!face_plane(st->v[t[0]].w, st->v[t[1]].w, st->v[t[2]].w,
+                        max3(st->vmax[t[0]], st->vmax[t[1]], st->vmax[t[2]]), &n, &d, &err))
             return 0;
-        set_face(st, i, tri[i][0], tri[i][1], tri[i][2], n, d, err);
-        for (int e = 0; e < 3; ++e) {
-            st->f[i].adj[e] = adj[i][e];
-            st->f[i].adje[e] = adje[i][e];
-        }
+        set_face(st, i, t[0], t[1], t[2], n, d, err);
+        for (int e = 0; e < 3; ++e) st->f[i].adj[e] = adj[i][e];
     }
     return 1;
 }
 
 /* Adds s to the polytope, seen from face f0 (sees(f0, s)): removes the faces
- * that see s (flood fill from f0 across edges) and joins s to the horizon.
+ * that see s and joins s to the horizon, the boundary of the region they
+ * cover. The region is walked depth first across edges, each face's edges
+ * counter-clockwise starting after the one it was entered by, so that for a
+ * region that is a disc the horizon edges come out in order around it, each
+ * ending where the next starts (as in van den Bergen's and Bullet's EPA).
  * Checks everything first; returns 0 with the polytope unchanged when the
  * store is full or the result would not be a closed surface of proper
- * triangles (rounding can make the visible region pinched). */
+ * triangles (rounding can make the visible region pinched or not a disc). */
 static int insert(epa_state *st, const agjk__vertex *s, int f0) {
+    static const int next3[3] = {1, 2, 0};
+    /* The walk's stack: a face and the edges of it still to cross. Each face
+     * enters once (marked), so MAX_FACES bounds both stacks. */
+    int walk_face[MAX_FACES], walk_edge[MAX_FACES], walk_left[MAX_FACES];
+    int removed[MAX_FACES];
     /* A simple horizon cycle visits each vertex at most once: MAX_VERTICES edges. */
-    int stack[MAX_FACES], visible[MAX_FACES];
-    int hu[MAX_VERTICES], hv[MAX_VERTICES], hg[MAX_VERTICES], hj[MAX_VERTICES];
-    int nstack = 0, nvis = 0, nh = 0;
-    if (st->nv >= MAX_VERTICES) return 0;
-    int stamp = ++st->stamp;
-    st->f[f0].stamp = stamp;
-    st->f[f0].visible = 1;
-    stack[nstack++] = f0;
-    while (nstack > 0) {
-        int fi = stack[--nstack];
-        visible[nvis++] = fi;
-        for (int e = 0; e < 3; ++e) {
-            epa_face *g = &st->f[st->f[fi].adj[e]];
-            if (g->stamp != stamp) {
-                g->stamp = stamp;
-                g->visible = sees(g, s->w);
-                if (g->visible) stack[nstack++] = st->f[fi].adj[e];
-            }
-            if (!g->visible) {
-                if (nh == MAX_VERTICES) return 0;
-                hu[nh] = st->f[fi].v[e];
-                hv[nh] = st->f[fi].v[(e + 1) % 3];
-                hg[nh] = st->f[fi].adj[e];
-                hj[nh] = st->f[fi].adje[e];
-                ++nh;
-            }
-        }
-    }
-    /* The horizon must be one simple cycle (every vertex starts one edge),
-     * the store must hold the new faces, and they need normals. */
-    int next[MAX_VERTICES];
+    int hu[MAX_VERTICES], hv[MAX_VERTICES], ho[MAX_VERTICES];
     agjk_vec3 hn[MAX_VERTICES];
     double hd[MAX_VERTICES], he[MAX_VERTICES];
-    int ok = nh <= st->nfree + nvis + (MAX_FACES - st->nf), marked = 0;
-    while (ok && marked < nh) {
-        int u = hu[marked];
-        if (st->start_of[u] >= 0) break; /* u starts two edges: pinched */
-        st->start_of[u] = marked;
-        ok = face_plane(st->v[u].w, st->v[hv[marked]].w, s->w, &hn[marked], &hd[marked],
-                        &he[marked]);
-        ++marked;
+    int depth = 0, nrem = 0, nh = 0;
+    if (st->nv >= MAX_VERTICES) return 0;
+    const agjk_vec3 w = s->w;
+    const int stamp = ++st->stamp;
+    st->f[f0].mark = stamp;
+    removed[nrem++] = f0;
+    walk_face[0] = f0;
+    walk_edge[0] = 0;
+    walk_left[0] = 3;
+    depth = 1;
+    while (depth > 0) {
+        int top = depth - 1;
+        if (walk_left[top] == 0) {
+            --depth;
+            continue;
+        }
+        int fi = walk_face[top], e = walk_edge[top];
+        walk_edge[top] = next3[e];
+        --walk_left[top];
+        int code = st->f[fi].adj[e];
+        epa_face *g = &st->f[ADJ_FACE(code)];
+        if (g->mark == stamp) continue; /* an edge inside the region */
+        if (sees(g, w)) {
+            g->mark = stamp;
+            removed[nrem++] = ADJ_FACE(code);
+            walk_face[depth] = ADJ_FACE(code);
+            walk_edge[depth] = next3[ADJ_EDGE(code)];
+            walk_left[depth] = 2;
+            ++depth;
+        } else {
+            if (nh == MAX_VERTICES) return 0;
+            hu[nh] = st->f[fi].v[e];
+            hv[nh] = st->f[fi].v[next3[e]];
+            ho[nh] = code;
+            ++nh;
+        }
     }
-    ok = ok && marked == nh;
-    for (int i = 0; ok && i < nh; ++i) {
-        next[i] = st->start_of[hv[i]];
-        ok = next[i] >= 0;
-    }
-    for (int i = 0; i < marked; ++i) st->start_of[hu[i]] = -1;
-    if (!ok) return 0;
-    /* Commit. */
-    int si = st->nv;
-    st->v[st->nv++] = *s;
-    for (int i = 0; i < nvis; ++i) {
-        st->f[visible[i]].alive = 0;
-        live_remove(st, visible[i]);
-        st->free_faces[st->nfree++] = visible[i];
-    }
-    int slot[MAX_VERTICES];
-    for (int i = 0; i < nh; ++i) slot[i] = st->nfree > 0 ? st->free_faces[--st->nfree] : st->nf++;
+    /* The horizon must be one simple cycle in walk order, the store must hold
+     * the new faces, and they need normals. */
+    if (nh < 3 || nh > nrem + st->nfree + (MAX_FACES - st->nf)) return 0;
+    const double wmax = v3_maxabs(w);
     for (int i = 0; i < nh; ++i) {
-        /* face i: edge 0 on the horizon (twin in the kept face hg[i]), edge 1
-         * shared with face next[i] (its edge 2), edge 2 with the face before */
+        int u = hu[i];
+        if (st->vmark[u] == stamp || hv[i] != hu[i + 1 < nh ? i + 1 : 0]) return 0;
+        st->vmark[u] = stamp;
+        if (!face_plane(st->v[u].w, st->v[hv[i]].w, w, max3(st->vmax[u], st->vmax[hv[i]], wmax),
+                        &hn[i], &hd[i], &he[i]))
+            return 0;
+    }
+    /* Commit: the new faces take the removed faces' slots first. */
+    int si = st->nv++;
+    st->v[si] = *s;
+    st->vmax[si] = wmax;
+    st->vmark[si] = 0;
+    int slot[MAX_VERTICES];
+    for (int i = 0; i < nh; ++i)
+        slot[i] = i < nrem ? removed[i] : st->nfree > 0 ? st->free_faces[--st->nfree] : st->nf++;
+    for (int i = nh; i < nrem; ++i) {
+        st->key[removed[i]] = INFINITY;
+        st->free_faces[st->nfree++] = removed[i];
+    }
+    for (int i = 0; i < nh; ++i) {
+        /* face i: edge 0 on the horizon (twin in the kept face ho[i]), edge 1
+         * shared with face i + 1 (its edge 2), edge 2 with face i - 1 */
         int fi = slot[i];
         set_face(st, fi, hu[i], hv[i], si, hn[i], hd[i], he[i]);
         epa_face *f = &st->f[fi];
-        f->adj[0] = hg[i];
-        f->adje[0] = hj[i];
-        f->adj[1] = slot[next[i]];
-        f->adje[1] = 2;
-        f->adje[2] = 1;
-        st->f[slot[next[i]]].adj[2] = fi;
-        st->f[hg[i]].adj[hj[i]] = fi;
-        st->f[hg[i]].adje[hj[i]] = 0;
+        f->adj[0] = ho[i];
+        f->adj[1] = ADJ(slot[i + 1 < nh ? i + 1 : 0], 2);
+        f->adj[2] = ADJ(slot[i > 0 ? i - 1 : nh - 1], 1);
+        st->f[ADJ_FACE(ho[i])].adj[ADJ_EDGE(ho[i])] = ADJ(fi, 0);
     }
     return 1;
 }
@@ -386,13 +393,13 @@ static int insert(epa_state *st, const agjk__vertex *s, int f0) {
 static int nearest_face(const epa_state *st, double *proved) {
     int best = 0;
     double low = st->key[0];
-    for (int i = 1; i < st->nlive; ++i)
+    for (int i = 1; i < st->nf; ++i)
         if (st->key[i] < low) {
             low = st->key[i];
             best = i;
         }
     *proved = low > 0.0 ? low : -INFINITY;
-    return st->live[best];
+    return best;
 }
 
 /* Whether [lower, upper] (depth, with vertex noise) meets the target. */
@@ -431,7 +438,7 @@ static void face_witness(const epa_state *st, int best, agjk__epa_output *out) {
     double outside = foot_weights(st, &st->f[best], l);
     for (int i = 0; i < st->nf && outside > 0.0; ++i) {
         const epa_face *f = &st->f[i];
-        if (!f->alive || i == best || f->dist > st->upper) continue;
+        if (!alive(st, i) || i == best || f->dist > st->upper) continue;
         double m[3];
         double o = foot_weights(st, f, m);
         if (o < outside) {
@@ -465,7 +472,6 @@ void agjk__epa(agjk__minkowski *md, const agjk__epa_input *in, agjk__epa_output 
     st.nv = 0;
     st.nf = 0;
     st.nfree = 0;
-    st.nlive = 0;
     st.stamp = 0;
     st.upper = INFINITY;
     st.estimate = INFINITY;
@@ -473,7 +479,6 @@ void agjk__epa(agjk__minkowski *md, const agjk__epa_input *in, agjk__epa_output 
     st.lower = -in->core_distance_upper; /* GJK's bound: depth >= -distance */
     st.nextra = 0;
     st.support_calls = 0;
-    for (int i = 0; i < MAX_VERTICES; ++i) st.start_of[i] = -1;
     out->has_witness = 0;
     out->iterations = 0;
     out->converged = 0;
@@ -487,7 +492,7 @@ void agjk__epa(agjk__minkowski *md, const agjk__epa_input *in, agjk__epa_output 
     } else {
         for (int i = 0; i < st.nextra; ++i)
             for (int fi = 0; fi < st.nf; ++fi)
-                if (st.f[fi].alive && sees(&st.f[fi], st.extra[i].w)) {
+                if (alive(&st, fi) && sees(&st.f[fi], st.extra[i].w)) {
                     insert(&st, &st.extra[i], fi);
                     break;
                 }
