@@ -49,8 +49,16 @@ typedef struct epa_state {
     int nv;
     epa_face f[MAX_FACES];
     /* dist - err of each face slot (the lower bound the face proves), +inf for
-     * a free slot: the nearest face is a tight scan of one array. */
+     * a free slot. */
     double key[MAX_FACES];
+    /* The slots the nearest-face scan visits: every face whose key was below
+     * the upper bound when it was made or last scanned (a face at or beyond
+     * it can never be expanded in absolute mode: were it nearest, the bounds
+     * would have met). Every face left out has key >= `excluded`. */
+    int cand[MAX_FACES];
+    unsigned char incand[MAX_FACES];
+    int ncand;
+    double excluded;
     int nf;                 /* face slots in use, alive or free */
     int free_faces[MAX_FACES];
     int nfree;
@@ -112,6 +120,7 @@ static void follow_rescale(epa_state *st) {
         st->f[i].err *= f;
         st->key[i] *= f; /* free slots stay +inf */
     }
+    st->excluded *= f;
     st->upper *= f;
     st->estimate *= f;
     st->lower *= f;
@@ -136,15 +145,15 @@ static int support(epa_state *st, agjk_vec3 n, agjk__vertex *s) {
     return 1;
 }
 
-/* Plane of the triangle p0 p1 p2: unit normal (right hand), offset, and a
- * rounding allowance on the offset. The computed normal is off the true one by
- * an angle of a few eps |e1| |e2| / |e1 x e2| (cancellation in the cross
- * product of the rounded edges), which moves the offset by that times |p|;
- * r >= max |p_i| of the three points bounds |p|. Returns 0 for a triangle
- * without a normal. */
-static int face_plane(agjk_vec3 p0, agjk_vec3 p1, agjk_vec3 p2, double r, agjk_vec3 *n,
-                      double *dist, double *err) {
-    agjk_vec3 e1 = v3_sub(p1, p0), e2 = v3_sub(p2, p0);
+/* Plane of the triangle p0, p0 + e1, p0 + e2 (e1, e2 its computed edges, of
+ * squared lengths l1, l2): unit normal (right hand), offset, and a rounding
+ * allowance on the offset. The computed normal is off the true one by an
+ * angle of a few eps |e1| |e2| / |e1 x e2| (cancellation in the cross product
+ * of the rounded edges), which moves the offset by that times |p|; r >= the
+ * max |p_i| of the three points bounds |p|. Returns 0 for a triangle without
+ * a normal. */
+static inline int face_plane(agjk_vec3 p0, agjk_vec3 e1, agjk_vec3 e2, double l1, double l2,
+                             double r, agjk_vec3 *n, double *dist, double *err) {
     agjk_vec3 c = v3_cross(e1, e2);
     double len2 = v3_norm2(c);
     if (!(len2 > 0.0) || !isfinite(len2)) return 0;
@@ -153,7 +162,7 @@ static int face_plane(agjk_vec3 p0, agjk_vec3 p1, agjk_vec3 p2, double r, agjk_v
     *dist = v3_dot(*n, p0);
     /* |p| <= sqrt(3) max |p_i|; 1 / sin(angle at p0) = |e1| |e2| / |c|
      * <= (|e1|^2 + |e2|^2) / (2 |c|). */
-    double skew = (v3_norm2(e1) + v3_norm2(e2)) * (0.5 * inv);
+    double skew = (l1 + l2) * (0.5 * inv);
     *err = 32.0 * DBL_EPSILON * r * (skew + 1.0);
     return 1; /* finite: solver units keep coordinates below 2^101 */
 }
@@ -175,7 +184,15 @@ static void set_face(epa_state *st, int fi, int a, int b, int c, agjk_vec3 n, do
     f->dist = dist;
     f->err = err;
     f->mark = 0;
-    st->key[fi] = dist - err;
+    double key = dist - err;
+    st->key[fi] = key;
+    if (st->incand[fi]) return;
+    if (key < st->upper) {
+        st->cand[st->ncand++] = fi;
+        st->incand[fi] = 1;
+    } else if (key < st->excluded) {
+        st->excluded = key;
+    }
 }
 
 /* A free slot holds no face. */
@@ -279,11 +296,13 @@ static int tetrahedron_faces(epa_state *st) {
                                   {ADJ(0, 0), ADJ(1, 2), ADJ(2, 1)}};
     st->nf = 4;
     st->nfree = 0;
+    for (int i = 0; i < 4; ++i) st->incand[i] = 0;
     for (int i = 0; i < 4; ++i) {
         const int *t = tri[i];
-        agjk_vec3 n;
+        agjk_vec3 n, q = st->v[t[0]].w;
+        agjk_vec3 e1 = v3_sub(st->v[t[1]].w, q), e2 = v3_sub(st->v[t[2]].w, q);
         double d, err;
-        if (!face_plane(st->v[t[0]].w, st->v[t[1]].w, st->v[t[2]].w,
+        if (!face_plane(q, e1, e2, v3_norm2(e1), v3_norm2(e2),
                         max3(st->vmax[t[0]], st->vmax[t[1]], st->vmax[t[2]]), &n, &d, &err))
             return 0;
         set_face(st, i, t[0], t[1], t[2], n, d, err);
@@ -309,8 +328,8 @@ static int insert(epa_state *st, const agjk__vertex *s, int f0) {
     int removed[MAX_FACES];
     /* A simple horizon cycle visits each vertex at most once: MAX_VERTICES edges. */
     int hu[MAX_VERTICES], hv[MAX_VERTICES], ho[MAX_VERTICES];
-    agjk_vec3 hn[MAX_VERTICES];
-    double hd[MAX_VERTICES], he[MAX_VERTICES];
+    agjk_vec3 hn[MAX_VERTICES], hw[MAX_VERTICES];
+    double hd[MAX_VERTICES], he[MAX_VERTICES], hl[MAX_VERTICES];
     int depth = 0, nrem = 0, nh = 0;
     if (st->nv >= MAX_VERTICES) return 0;
     const agjk_vec3 w = s->w;
@@ -349,14 +368,21 @@ static int insert(epa_state *st, const agjk__vertex *s, int f0) {
         }
     }
     /* The horizon must be one simple cycle in walk order, the store must hold
-     * the new faces, and they need normals. */
+     * the new faces, and they need normals. Face i is the triangle s u_i
+     * u_{i+1}: its edges from s are hw[i] and hw[i + 1], shared with the
+     * neighbours. */
     if (nh < 3 || nh > nrem + st->nfree + (MAX_FACES - st->nf)) return 0;
-    const double wmax = v3_maxabs(w);
     for (int i = 0; i < nh; ++i) {
         int u = hu[i];
         if (st->vmark[u] == stamp || hv[i] != hu[i + 1 < nh ? i + 1 : 0]) return 0;
         st->vmark[u] = stamp;
-        if (!face_plane(st->v[u].w, st->v[hv[i]].w, w, max3(st->vmax[u], st->vmax[hv[i]], wmax),
+        hw[i] = v3_sub(st->v[u].w, w);
+        hl[i] = v3_norm2(hw[i]);
+    }
+    const double wmax = v3_maxabs(w);
+    for (int i = 0; i < nh; ++i) {
+        int j = i + 1 < nh ? i + 1 : 0;
+        if (!face_plane(w, hw[i], hw[j], hl[i], hl[j], max3(st->vmax[hu[i]], st->vmax[hu[j]], wmax),
                         &hn[i], &hd[i], &he[i]))
             return 0;
     }
@@ -367,7 +393,14 @@ static int insert(epa_state *st, const agjk__vertex *s, int f0) {
     st->vmark[si] = 0;
     int slot[MAX_VERTICES];
     for (int i = 0; i < nh; ++i)
-        slot[i] = i < nrem ? removed[i] : st->nfree > 0 ? st->free_faces[--st->nfree] : st->nf++;
+        if (i < nrem) {
+            slot[i] = removed[i];
+        } else if (st->nfree > 0) {
+            slot[i] = st->free_faces[--st->nfree];
+        } else {
+            slot[i] = st->nf++;
+            st->incand[slot[i]] = 0;
+        }
     for (int i = nh; i < nrem; ++i) {
         st->key[removed[i]] = INFINITY;
         st->free_faces[st->nfree++] = removed[i];
@@ -389,17 +422,46 @@ static int insert(epa_state *st, const agjk__vertex *s, int f0) {
 /* The face whose plane is nearest to the origin (after its rounding
  * allowance): EPA expands it. Also the certified lower bound the polytope
  * proves, min over faces of dist - err, or -inf if it proves none (some face
- * may not have the origin strictly inside). */
-static int nearest_face(const epa_state *st, double *proved) {
-    int best = 0;
-    double low = st->key[0];
-    for (int i = 1; i < st->nf; ++i)
-        if (st->key[i] < low) {
-            low = st->key[i];
-            best = i;
+ * may not have the origin strictly inside). The scan drops the faces at or
+ * beyond the upper bound; the faces left out are all farther than the ones
+ * kept (they were at or beyond an upper bound at least as large) unless none
+ * is kept: then every face is listed again. */
+static int nearest_face(epa_state *st, double *proved) {
+    double bound = st->upper;
+    *proved = -INFINITY;
+    for (int pass = 0; pass < 2; ++pass) {
+        int best = -1, kept = 0;
+        double low = INFINITY;
+        for (int i = 0; i < st->ncand; ++i) {
+            int fi = st->cand[i];
+            double k = st->key[fi];
+            if (k < bound) {
+                st->cand[kept++] = fi;
+                if (k < low) {
+                    low = k;
+                    best = fi;
+                }
+            } else {
+                st->incand[fi] = 0;
+                if (k < st->excluded) st->excluded = k;
+            }
         }
-    *proved = low > 0.0 ? low : -INFINITY;
-    return best;
+        st->ncand = kept;
+        if (best >= 0 && low <= st->excluded) {
+            *proved = low > 0.0 ? low : -INFINITY;
+            return best;
+        }
+        /* Every face again; the second pass keeps them all. */
+        st->ncand = 0;
+        st->excluded = INFINITY;
+        for (int fi = 0; fi < st->nf; ++fi)
+            if (alive(st, fi)) {
+                st->cand[st->ncand++] = fi;
+                st->incand[fi] = 1;
+            }
+        bound = INFINITY;
+    }
+    return -1;
 }
 
 /* Whether [lower, upper] (depth, with vertex noise) meets the target. */
@@ -472,6 +534,8 @@ void agjk__epa(agjk__minkowski *md, const agjk__epa_input *in, agjk__epa_output 
     st.nv = 0;
     st.nf = 0;
     st.nfree = 0;
+    st.ncand = 0;
+    st.excluded = INFINITY;
     st.stamp = 0;
     st.upper = INFINITY;
     st.estimate = INFINITY;
@@ -501,6 +565,10 @@ void agjk__epa(agjk__minkowski *md, const agjk__epa_input *in, agjk__epa_output 
         for (int k = 0;; ++k) {
             double proved;
             best = nearest_face(&st, &proved);
+            if (best < 0) { /* no face: cannot happen with a polytope */
+                out->outcome = AGJK__EPA_DEGENERATE;
+                break;
+            }
             if (proved > st.lower) st.lower = proved;
             if (width_met(&st, in, agjk__epa_noise(md), agjk__epa_floor(md))) {
                 out->outcome = AGJK__EPA_CONVERGED;
