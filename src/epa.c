@@ -46,6 +46,12 @@ typedef struct epa_state {
     agjk__vertex v[MAX_VERTICES];
     double vmax[MAX_VERTICES];  /* max |w_i| of each vertex (face_plane's rounding) */
     int vmark[MAX_VERTICES];    /* insert's check that the horizon is simple */
+    /* The support hints (md->hint_a, hint_b) that found each vertex: a
+     * support call in a face's normal starts from those of the face's newest
+     * vertex, near its answer (hill climbing on polytopes: 6% fewer
+     * instructions per query on the benchmark's hulls than from wherever the
+     * last call ended; the face's vertex farthest along the normal did worse). */
+    int hint_a[MAX_VERTICES], hint_b[MAX_VERTICES];
     int nv;
     epa_face f[MAX_FACES];
     /* dist - err of each face slot (the lower bound the face proves), +inf for
@@ -286,6 +292,8 @@ static int tetrahedron_faces(epa_state *st) {
     for (int i = 0; i < 4; ++i) {
         st->vmax[i] = v3_maxabs(st->v[i].w);
         st->vmark[i] = 0;
+        st->hint_a[i] = st->md->hint_a; /* the last call's: valid, if not the best */
+        st->hint_b[i] = st->md->hint_b;
     }
     /* Face i holds the edges tri[i][e] -> tri[i][e + 1]; adj[i][e] is the face
      * holding the same edge reversed, and that edge's index in it. */
@@ -320,22 +328,25 @@ static int tetrahedron_faces(epa_state *st) {
  * Checks everything first; returns 0 with the polytope unchanged when the
  * store is full or the result would not be a closed surface of proper
  * triangles (rounding can make the visible region pinched or not a disc). */
-static int insert(epa_state *st, const agjk__vertex *s, int f0) {
+static int insert(epa_state *st, const agjk__vertex *s, int f0, int hint_a, int hint_b) {
     static const int next3[3] = {1, 2, 0};
     /* The walk's stack: a face and the edges of it still to cross. Each face
      * enters once (marked), so MAX_FACES bounds both stacks. */
     int walk_face[MAX_FACES], walk_edge[MAX_FACES], walk_left[MAX_FACES];
-    int removed[MAX_FACES];
-    /* A simple horizon cycle visits each vertex at most once: MAX_VERTICES edges. */
-    int hu[MAX_VERTICES], hv[MAX_VERTICES], ho[MAX_VERTICES];
-    agjk_vec3 hn[MAX_VERTICES], hw[MAX_VERTICES];
-    double hd[MAX_VERTICES], he[MAX_VERTICES], hl[MAX_VERTICES];
-    int depth = 0, nrem = 0, nh = 0;
+    /* slot[1..nrem]: the faces removed, then slot[1..nh] those of the new
+     * faces; slot[0] and slot[nh + 1] repeat the ends (the cycle closes). */
+    int slot[MAX_FACES + 2];
+    /* Horizon edge i runs from hu[i] to hu[i + 1] (kept face across: ho[i]);
+     * a simple cycle visits each vertex at most once: MAX_VERTICES edges. */
+    int hu[MAX_VERTICES + 1], ho[MAX_VERTICES];
+    agjk_vec3 hw[MAX_VERTICES + 1], hn[MAX_VERTICES];
+    double hl[MAX_VERTICES + 1], hr[MAX_VERTICES + 1], hd[MAX_VERTICES], he[MAX_VERTICES];
+    int depth, nrem = 0, nh = 0, end = -1;
     if (st->nv >= MAX_VERTICES) return 0;
     const agjk_vec3 w = s->w;
     const int stamp = ++st->stamp;
     st->f[f0].mark = stamp;
-    removed[nrem++] = f0;
+    slot[++nrem] = f0;
     walk_face[0] = f0;
     walk_edge[0] = 0;
     walk_left[0] = 3;
@@ -354,66 +365,70 @@ static int insert(epa_state *st, const agjk__vertex *s, int f0) {
         if (g->mark == stamp) continue; /* an edge inside the region */
         if (sees(g, w)) {
             g->mark = stamp;
-            removed[nrem++] = ADJ_FACE(code);
+            slot[++nrem] = ADJ_FACE(code);
             walk_face[depth] = ADJ_FACE(code);
             walk_edge[depth] = next3[ADJ_EDGE(code)];
             walk_left[depth] = 2;
             ++depth;
         } else {
-            if (nh == MAX_VERTICES) return 0;
-            hu[nh] = st->f[fi].v[e];
-            hv[nh] = st->f[fi].v[next3[e]];
+            /* A horizon edge: in walk order it must start where the last ended. */
+            int u = st->f[fi].v[e];
+            if (nh == MAX_VERTICES || (nh > 0 && u != end) || st->vmark[u] == stamp) return 0;
+            st->vmark[u] = stamp;
+            end = st->f[fi].v[next3[e]];
+            hu[nh] = u;
             ho[nh] = code;
             ++nh;
         }
     }
-    /* The horizon must be one simple cycle in walk order, the store must hold
-     * the new faces, and they need normals. Face i is the triangle s u_i
-     * u_{i+1}: its edges from s are hw[i] and hw[i + 1], shared with the
-     * neighbours. */
-    if (nh < 3 || nh > nrem + st->nfree + (MAX_FACES - st->nf)) return 0;
+    /* The horizon must close, the store must hold the new faces, and they
+     * need normals. Face i is the triangle s u_i u_{i+1}: its edges from s,
+     * hw[i] and hw[i + 1], are shared with its neighbours. */
+    if (nh < 3 || end != hu[0] || nh > nrem + st->nfree + (MAX_FACES - st->nf)) return 0;
     for (int i = 0; i < nh; ++i) {
-        int u = hu[i];
-        if (st->vmark[u] == stamp || hv[i] != hu[i + 1 < nh ? i + 1 : 0]) return 0;
-        st->vmark[u] = stamp;
-        hw[i] = v3_sub(st->v[u].w, w);
+        hw[i] = v3_sub(st->v[hu[i]].w, w);
         hl[i] = v3_norm2(hw[i]);
+        hr[i] = st->vmax[hu[i]];
     }
+    hu[nh] = hu[0];
+    hw[nh] = hw[0];
+    hl[nh] = hl[0];
+    hr[nh] = hr[0];
     const double wmax = v3_maxabs(w);
-    for (int i = 0; i < nh; ++i) {
-        int j = i + 1 < nh ? i + 1 : 0;
-        if (!face_plane(w, hw[i], hw[j], hl[i], hl[j], max3(st->vmax[hu[i]], st->vmax[hu[j]], wmax),
+    for (int i = 0; i < nh; ++i)
+        if (!face_plane(w, hw[i], hw[i + 1], hl[i], hl[i + 1], max3(hr[i], hr[i + 1], wmax),
                         &hn[i], &hd[i], &he[i]))
             return 0;
-    }
     /* Commit: the new faces take the removed faces' slots first. */
     int si = st->nv++;
     st->v[si] = *s;
     st->vmax[si] = wmax;
     st->vmark[si] = 0;
-    int slot[MAX_VERTICES];
-    for (int i = 0; i < nh; ++i)
-        if (i < nrem) {
-            slot[i] = removed[i];
-        } else if (st->nfree > 0) {
+    st->hint_a[si] = hint_a;
+    st->hint_b[si] = hint_b;
+    for (int i = nrem + 1; i <= nh; ++i) {
+        if (st->nfree > 0) {
             slot[i] = st->free_faces[--st->nfree];
         } else {
             slot[i] = st->nf++;
             st->incand[slot[i]] = 0;
         }
-    for (int i = nh; i < nrem; ++i) {
-        st->key[removed[i]] = INFINITY;
-        st->free_faces[st->nfree++] = removed[i];
     }
+    for (int i = nh + 1; i <= nrem; ++i) {
+        st->key[slot[i]] = INFINITY;
+        st->free_faces[st->nfree++] = slot[i];
+    }
+    slot[0] = slot[nh];
+    slot[nh + 1] = slot[1];
     for (int i = 0; i < nh; ++i) {
         /* face i: edge 0 on the horizon (twin in the kept face ho[i]), edge 1
          * shared with face i + 1 (its edge 2), edge 2 with face i - 1 */
-        int fi = slot[i];
-        set_face(st, fi, hu[i], hv[i], si, hn[i], hd[i], he[i]);
+        int fi = slot[i + 1];
+        set_face(st, fi, hu[i], hu[i + 1], si, hn[i], hd[i], he[i]);
         epa_face *f = &st->f[fi];
         f->adj[0] = ho[i];
-        f->adj[1] = ADJ(slot[i + 1 < nh ? i + 1 : 0], 2);
-        f->adj[2] = ADJ(slot[i > 0 ? i - 1 : nh - 1], 1);
+        f->adj[1] = ADJ(slot[i + 2], 2);
+        f->adj[2] = ADJ(slot[i], 1);
         st->f[ADJ_FACE(ho[i])].adj[ADJ_EDGE(ho[i])] = ADJ(fi, 0);
     }
     return 1;
@@ -557,7 +572,7 @@ void agjk__epa(agjk__minkowski *md, const agjk__epa_input *in, agjk__epa_output 
         for (int i = 0; i < st.nextra; ++i)
             for (int fi = 0; fi < st.nf; ++fi)
                 if (alive(&st, fi) && sees(&st.f[fi], st.extra[i].w)) {
-                    insert(&st, &st.extra[i], fi);
+                    insert(&st, &st.extra[i], fi, md->hint_a, md->hint_b);
                     break;
                 }
         out->outcome = AGJK__EPA_CAP;
@@ -578,6 +593,8 @@ void agjk__epa(agjk__minkowski *md, const agjk__epa_input *in, agjk__epa_output 
             const epa_face *f = &st.f[best];
             agjk__vertex s;
             ++out->iterations;
+            md->hint_a = st.hint_a[f->v[2]]; /* the face's newest vertex */
+            md->hint_b = st.hint_b[f->v[2]];
             if (!support(&st, f->n, &s)) {
                 out->outcome = AGJK__EPA_BAD_SUPPORT;
                 break;
@@ -594,7 +611,7 @@ void agjk__epa(agjk__minkowski *md, const agjk__epa_input *in, agjk__epa_output 
                 out->outcome = AGJK__EPA_FULL;
                 break;
             }
-            if (!insert(&st, &s, best)) {
+            if (!insert(&st, &s, best, md->hint_a, md->hint_b)) {
                 out->outcome = AGJK__EPA_DEGENERATE;
                 break;
             }
