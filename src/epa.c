@@ -73,6 +73,8 @@ typedef struct epa_state {
     agjk_vec3 upper_n;
     double estimate;        /* <n, S_D(n)> for upper_n */
     double lower;           /* best certified lower bound (before vertex noise) */
+    double tolerance;       /* the caller's (absolute mode) */
+    double width_cap;       /* sqrt(tolerance), solver units, absolute mode (width_met) */
     agjk__vertex extra[4];  /* blow-up points to add once the tetrahedron stands */
     int nextra;
     int support_calls;
@@ -104,6 +106,10 @@ double agjk__epa_target(int relative, double tolerance, double scale, double s_l
     return target > floor ? target : floor;
 }
 
+/* sqrt(tolerance) in solver units, as agjk__epa_target computes it (so that
+ * it bounds the target in absolute mode). */
+static double width_cap(double tolerance, double scale) { return sqrt(tolerance * scale * scale); }
+
 /* Multiplies everything held in solver units by f (the support call lowered
  * md->scale, see agjk__minkowski_shrink; exact, a power of two). */
 static void follow_rescale(epa_state *st) {
@@ -128,6 +134,7 @@ static void follow_rescale(epa_state *st) {
     }
     st->excluded *= f;
     st->upper *= f;
+    if (st->width_cap < INFINITY) st->width_cap = width_cap(st->tolerance, st->md->scale);
     st->estimate *= f;
     st->lower *= f;
 }
@@ -484,6 +491,9 @@ static int width_met(const epa_state *st, const agjk__epa_input *in, double nois
                      double floor) {
     double lo = st->lower - 2.0 * noise, up = st->upper + 2.0 * noise;
     if (!(up < INFINITY) || !(lo > -INFINITY)) return 0;
+    /* In absolute mode the target is at most max(sqrt(tolerance) (solver
+     * units), floor): most iterations are decided here. */
+    if (!in->relative && up - lo > st->width_cap && up - lo > floor) return 0;
     double margin = in->margin * st->md->scale;
     double target = agjk__epa_target(in->relative, in->tolerance, st->md->scale, -(up + margin),
                                      -(lo + margin), in->relative ? 0.0 : floor);
@@ -521,10 +531,12 @@ static void face_witness(const epa_state *st, int best, agjk__epa_output *out) {
         if (o < outside) {
             outside = o;
             best = i;
+            l[0] = m[0];
+            l[1] = m[1];
+            l[2] = m[2];
         }
     }
     const epa_face *f = &st->f[best];
-    foot_weights(st, f, l);
     double sum = 0.0;
     for (int i = 0; i < 3; ++i) {
         if (!(l[i] > 0.0)) l[i] = 0.0;
@@ -556,6 +568,8 @@ void agjk__epa(agjk__minkowski *md, const agjk__epa_input *in, agjk__epa_output 
     st.estimate = INFINITY;
     st.upper_n = v3(0.0, 0.0, 0.0);
     st.lower = -in->core_distance_upper; /* GJK's bound: depth >= -distance */
+    st.tolerance = in->tolerance;
+    st.width_cap = in->relative ? INFINITY : width_cap(in->tolerance, md->scale);
     st.nextra = 0;
     st.support_calls = 0;
     out->has_witness = 0;
