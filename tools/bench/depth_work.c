@@ -4,7 +4,7 @@
  * GJK + EPA, for instruction counts under valgrind's callgrind. Every query
  * is one call of measured_agjk() or measured_coal():
  *
- *   agjk-depth-work agjk|coal ellipsoids|boxes|hulls [PROBLEMS [METHOD]]
+ *   agjk-depth-work agjk|coal ellipsoids|boxes|hulls [PROBLEMS [METHOD [REPEAT]]]
  *   valgrind --tool=callgrind --collect-atstart=no --toggle-collect=measured_agjk \
  *       agjk-depth-work agjk ellipsoids 200
  *
@@ -14,7 +14,9 @@
  * problems are the benchmark's (same generator and seeds as agjk-bench's
  * default run, hulls of 33 and 141 vertices), the first PROBLEMS overlapping
  * ones of the family (default 200). METHOD: an agjk_method number (default:
- * the depth benchmark's, Nesterov for ellipsoids, normalized otherwise). */
+ * the depth benchmark's, Nesterov for ellipsoids, normalized otherwise; -1 for
+ * that). REPEAT: run each query that many times (wall-clock comparisons of
+ * two builds with time(1); default 1). */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -70,6 +72,7 @@ int main(int argc, char **argv) {
     static const int hull_sizes[2] = {33, 141};
     int family = -1, max = argc > 3 ? atoi(argv[3]) : 200, n = 0;
     int method = argc > 4 ? atoi(argv[4]) : -1;
+    int repeat = argc > 5 ? atoi(argv[5]) : 1;
     if (argc > 2) {
         if (strcmp(argv[2], "ellipsoids") == 0) family = BENCH_ELLIPSOIDS;
         if (strcmp(argv[2], "boxes") == 0) family = BENCH_BOXES;
@@ -78,7 +81,7 @@ int main(int argc, char **argv) {
     if (argc < 3 || family < 0 || max < 1 ||
         (strcmp(argv[1], "agjk") != 0 && strcmp(argv[1], "coal") != 0)) {
         fprintf(stderr, "usage: agjk-depth-work agjk|coal ellipsoids|boxes|hulls [PROBLEMS "
-                        "[METHOD]]\n");
+                        "[METHOD [REPEAT]]]\n");
         return 2;
     }
     int coal = strcmp(argv[1], "coal") == 0;
@@ -123,7 +126,7 @@ int main(int argc, char **argv) {
         double value;
         if (!coal) {
             agjk_signed_result r;
-            measured_agjk(&q, &r);
+            for (int k = 0; k < repeat; ++k) measured_agjk(&q, &r);
             iterations = r.epa_iterations;
             value = r.signed_distance;
         } else {
@@ -139,7 +142,7 @@ int main(int argc, char **argv) {
             d.epa_max_iterations = 1000;
             void *cq = coal_adapter_depth_query_new(sa, sb, &d);
             if (!cq) return 3;
-            measured_coal(cq);
+            for (int k = 0; k < repeat; ++k) measured_coal(cq);
             coal_adapter_depth_query_answer(cq, &a);
             iterations = a.epa_iterations;
             value = -a.depth;
