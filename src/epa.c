@@ -114,7 +114,6 @@ static double width_cap(double tolerance, double scale) { return sqrt(tolerance 
  * md->scale, see agjk__minkowski_shrink; exact, a power of two). */
 static void follow_rescale(epa_state *st) {
     double f = st->md->rescaled;
-    if (f == 1.0) return;
     st->md->rescaled = 1.0;
     for (int i = 0; i < st->nv; ++i) {
         st->v[i].w = v3_scale(st->v[i].w, f);
@@ -145,7 +144,7 @@ static int support(epa_state *st, agjk_vec3 n, agjk__vertex *s) {
     agjk__minkowski_support(st->md, v3_neg(n), s); /* argmin <-n, .> */
     ++st->support_calls;
     if (st->md->bad_support) return 0;
-    follow_rescale(st);
+    if (st->md->rescaled != 1.0) follow_rescale(st);
     double h = v3_dot(n, s->w);
     /* Rounding of the dot product and |n| = 1 +- a few eps, with
      * |w| <= sqrt(3) max |w_i|. */
@@ -196,7 +195,6 @@ static void set_face(epa_state *st, int fi, int a, int b, int c, agjk_vec3 n, do
     f->n = n;
     f->dist = dist;
     f->err = err;
-    f->mark = 0;
     double key = dist - err;
     st->key[fi] = key;
     if (st->incand[fi]) return;
@@ -311,7 +309,10 @@ static int tetrahedron_faces(epa_state *st) {
                                   {ADJ(0, 0), ADJ(1, 2), ADJ(2, 1)}};
     st->nf = 4;
     st->nfree = 0;
-    for (int i = 0; i < 4; ++i) st->incand[i] = 0;
+    for (int i = 0; i < 4; ++i) {
+        st->incand[i] = 0;
+        st->f[i].mark = 0;
+    }
     for (int i = 0; i < 4; ++i) {
         const int *t = tri[i];
         agjk_vec3 n, q = st->v[t[0]].w;
@@ -385,6 +386,9 @@ static int insert(epa_state *st, const agjk__vertex *s, int f0, int hint_a, int 
             end = st->f[fi].v[next3[e]];
             hu[nh] = u;
             ho[nh] = code;
+            hw[nh] = v3_sub(st->v[u].w, w);
+            hl[nh] = v3_norm2(hw[nh]);
+            hr[nh] = st->vmax[u];
             ++nh;
         }
     }
@@ -392,11 +396,6 @@ static int insert(epa_state *st, const agjk__vertex *s, int f0, int hint_a, int 
      * need normals. Face i is the triangle s u_i u_{i+1}: its edges from s,
      * hw[i] and hw[i + 1], are shared with its neighbours. */
     if (nh < 3 || end != hu[0] || nh > nrem + st->nfree + (MAX_FACES - st->nf)) return 0;
-    for (int i = 0; i < nh; ++i) {
-        hw[i] = v3_sub(st->v[hu[i]].w, w);
-        hl[i] = v3_norm2(hw[i]);
-        hr[i] = st->vmax[hu[i]];
-    }
     hu[nh] = hu[0];
     hw[nh] = hw[0];
     hl[nh] = hl[0];
@@ -416,9 +415,10 @@ static int insert(epa_state *st, const agjk__vertex *s, int f0, int hint_a, int 
     for (int i = nrem + 1; i <= nh; ++i) {
         if (st->nfree > 0) {
             slot[i] = st->free_faces[--st->nfree];
-        } else {
+        } else { /* a fresh slot: marks only grow, so 0 is never current */
             slot[i] = st->nf++;
             st->incand[slot[i]] = 0;
+            st->f[slot[i]].mark = 0;
         }
     }
     for (int i = nh + 1; i <= nrem; ++i) {
