@@ -338,9 +338,9 @@ static int tetrahedron_faces(epa_state *st) {
  * triangles (rounding can make the visible region pinched or not a disc). */
 static int insert(epa_state *st, const agjk__vertex *s, int f0, int hint_a, int hint_b) {
     static const int next3[3] = {1, 2, 0};
-    /* The walk's stack: a face and the edges of it still to cross. Each face
-     * enters once (marked), so MAX_FACES bounds both stacks. */
-    int walk_face[MAX_FACES], walk_edge[MAX_FACES], walk_left[MAX_FACES];
+    /* The walk's stack of edges to cross, each as ADJ(face beyond, its edge
+     * index there): f0 pushes 3, every other face entered (once: marked) 2. */
+    int walk[2 * MAX_FACES + 3];
     /* slot[1..nrem]: the faces removed, then slot[1..nh] those of the new
      * faces; slot[0] and slot[nh + 1] repeat the ends (the cycle closes). */
     int slot[MAX_FACES + 2];
@@ -349,41 +349,34 @@ static int insert(epa_state *st, const agjk__vertex *s, int f0, int hint_a, int 
     int hu[MAX_VERTICES + 1], ho[MAX_VERTICES];
     agjk_vec3 hw[MAX_VERTICES + 1], hn[MAX_VERTICES];
     double hl[MAX_VERTICES + 1], hr[MAX_VERTICES + 1], hd[MAX_VERTICES], he[MAX_VERTICES];
-    int depth, nrem = 0, nh = 0, end = -1;
+    int depth = 0, nrem = 0, nh = 0, end = -1;
     if (st->nv >= MAX_VERTICES) return 0;
     const agjk_vec3 w = s->w;
     const int stamp = ++st->stamp;
     st->f[f0].mark = stamp;
     slot[++nrem] = f0;
-    walk_face[0] = f0;
-    walk_edge[0] = 0;
-    walk_left[0] = 3;
-    depth = 1;
+    /* Popped in the order pushed in reverse: edges 0, 1, 2 of f0, and for a
+     * face entered by edge e, the edges e + 1 and e + 2, each with all that
+     * lies beyond it before the next. */
+    for (int e = 2; e >= 0; --e) walk[depth++] = st->f[f0].adj[e];
     while (depth > 0) {
-        int top = depth - 1;
-        if (walk_left[top] == 0) {
-            --depth;
-            continue;
-        }
-        int fi = walk_face[top], e = walk_edge[top];
-        walk_edge[top] = next3[e];
-        --walk_left[top];
-        int code = st->f[fi].adj[e];
-        epa_face *g = &st->f[ADJ_FACE(code)];
+        int code = walk[--depth];
+        int gi = ADJ_FACE(code), ge = ADJ_EDGE(code);
+        epa_face *g = &st->f[gi];
         if (g->mark == stamp) continue; /* an edge inside the region */
         if (sees(g, w)) {
             g->mark = stamp;
-            slot[++nrem] = ADJ_FACE(code);
-            walk_face[depth] = ADJ_FACE(code);
-            walk_edge[depth] = next3[ADJ_EDGE(code)];
-            walk_left[depth] = 2;
-            ++depth;
+            slot[++nrem] = gi;
+            walk[depth++] = g->adj[next3[next3[ge]]];
+            walk[depth++] = g->adj[next3[ge]];
         } else {
-            /* A horizon edge: in walk order it must start where the last ended. */
-            int u = st->f[fi].v[e];
+            /* A horizon edge, from g's v[ge + 1] to its v[ge] (g sees it the
+             * other way round): in walk order it must start where the last
+             * ended. */
+            int u = g->v[next3[ge]];
             if (nh == MAX_VERTICES || (nh > 0 && u != end) || st->vmark[u] == stamp) return 0;
             st->vmark[u] = stamp;
-            end = st->f[fi].v[next3[e]];
+            end = g->v[ge];
             hu[nh] = u;
             ho[nh] = code;
             hw[nh] = v3_sub(st->v[u].w, w);
