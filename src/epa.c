@@ -226,6 +226,19 @@ static double off_hull(const agjk__vertex *pts, int k, agjk_vec3 p) {
     return fabs(v3_dot(n, d));
 }
 
+/* Whether off_hull(pts, k, p) > thr (thr > 0), compared in squares: no
+ * square root or division for GJK's points, nearly always far apart. */
+static int off_hull_beyond(const agjk__vertex *pts, int k, agjk_vec3 p, double thr) {
+    agjk_vec3 d = v3_sub(p, pts[0].w);
+    double t2 = thr * thr;
+    if (k == 1) return v3_norm2(d) > t2;
+    agjk_vec3 e = v3_sub(pts[1].w, pts[0].w);
+    if (k == 2) return v3_norm2(v3_cross(d, e)) > t2 * v3_norm2(e);
+    agjk_vec3 c = v3_cross(e, v3_sub(pts[2].w, pts[0].w));
+    double h = v3_dot(c, d);
+    return h * h > t2 * v3_norm2(c);
+}
+
 /* Directions orthogonal to the affine hull of pts[0..k-1], k = 1, 2, 3. */
 static int hull_normals(const agjk__vertex *pts, int k, agjk_vec3 dirs[3]) {
     if (k == 1) {
@@ -259,7 +272,8 @@ static int blow_up(epa_state *st, const agjk__vertex *simplex, int count, int *f
     *flat = 0;
     if (count < 1) return 0;
     for (int i = 0; i < count && st->nv < 4; ++i)
-        if (st->nv == 0 || off_hull(st->v, st->nv, simplex[i].w) > thr) st->v[st->nv++] = simplex[i];
+        if (st->nv == 0 || off_hull_beyond(st->v, st->nv, simplex[i].w, thr))
+            st->v[st->nv++] = simplex[i];
     while (st->nv < 4) {
         agjk_vec3 dirs[3];
         int nd = hull_normals(st->v, st->nv, dirs), added = 0;
