@@ -24,7 +24,7 @@
 #include "epa.h"
 
 #define MAX_VERTICES AGJK_EPA_MAX_VERTICES
-#define MAX_FACES (2 * AGJK_EPA_MAX_VERTICES)
+#define MAX_FACES AGJK__EPA_MAX_FACES
 
 /* A face's neighbours are coded 4 * face + edge: the face across edge i (from
  * v[i] to v[(i + 1) % 3]) and the index of the same edge in it. */
@@ -57,14 +57,7 @@ typedef struct epa_state {
     /* dist - err of each face slot (the lower bound the face proves), +inf for
      * a free slot. */
     double key[MAX_FACES];
-    /* The slots the nearest-face scan visits: every face whose key was below
-     * the upper bound when it was made or last scanned (a face at or beyond
-     * it can never be expanded in absolute mode: were it nearest, the bounds
-     * would have met). Every face left out has key >= `excluded`. */
-    int cand[MAX_FACES];
-    unsigned char incand[MAX_FACES];
-    int ncand;
-    double excluded;
+    agjk__epa_scan scan;    /* the faces the nearest-face search visits */
     int nf;                 /* face slots in use, alive or free */
     int free_faces[MAX_FACES];
     int nfree;
@@ -131,7 +124,7 @@ static void follow_rescale(epa_state *st) {
         st->f[i].err *= f;
         st->key[i] *= f; /* free slots stay +inf */
     }
-    st->excluded *= f;
+    st->scan.excluded *= f;
     st->upper *= f;
     if (st->width_cap < INFINITY) st->width_cap = width_cap(st->tolerance, st->md->scale);
     st->estimate *= f;
@@ -195,15 +188,8 @@ static void set_face(epa_state *st, int fi, int a, int b, int c, agjk_vec3 n, do
     f->n = n;
     f->dist = dist;
     f->err = err;
-    double key = dist - err;
-    st->key[fi] = key;
-    if (st->incand[fi]) return;
-    if (key < st->upper) {
-        st->cand[st->ncand++] = fi;
-        st->incand[fi] = 1;
-    } else if (key < st->excluded) {
-        st->excluded = key;
-    }
+    st->key[fi] = dist - err;
+    agjk__epa_scan_offer(&st->scan, fi, dist - err, st->upper);
 }
 
 /* A free slot holds no face. */
@@ -324,7 +310,7 @@ static int tetrahedron_faces(epa_state *st) {
     st->nf = 4;
     st->nfree = 0;
     for (int i = 0; i < 4; ++i) {
-        st->incand[i] = 0;
+        agjk__epa_scan_fresh(&st->scan, i);
         st->f[i].mark = 0;
     }
     for (int i = 0; i < 4; ++i) {
@@ -424,7 +410,7 @@ static int insert(epa_state *st, const agjk__vertex *s, int f0, int hint_a, int 
             slot[i] = st->free_faces[--st->nfree];
         } else { /* a fresh slot: marks only grow, so 0 is never current */
             slot[i] = st->nf++;
-            st->incand[slot[i]] = 0;
+            agjk__epa_scan_fresh(&st->scan, slot[i]);
             st->f[slot[i]].mark = 0;
         }
     }
@@ -451,46 +437,12 @@ static int insert(epa_state *st, const agjk__vertex *s, int f0, int hint_a, int 
 /* The face whose plane is nearest to the origin (after its rounding
  * allowance): EPA expands it. Also the certified lower bound the polytope
  * proves, min over faces of dist - err, or -inf if it proves none (some face
- * may not have the origin strictly inside). The scan drops the faces at or
- * beyond the upper bound; the faces left out are all farther than the ones
- * kept (they were at or beyond an upper bound at least as large) unless none
- * is kept: then every face is listed again. */
+ * may not have the origin strictly inside). */
 static int nearest_face(epa_state *st, double *proved) {
-    double bound = st->upper;
-    *proved = -INFINITY;
-    for (int pass = 0; pass < 2; ++pass) {
-        int best = -1, kept = 0;
-        double low = INFINITY;
-        for (int i = 0; i < st->ncand; ++i) {
-            int fi = st->cand[i];
-            double k = st->key[fi];
-            if (k < bound) {
-                st->cand[kept++] = fi;
-                if (k < low) {
-                    low = k;
-                    best = fi;
-                }
-            } else {
-                st->incand[fi] = 0;
-                if (k < st->excluded) st->excluded = k;
-            }
-        }
-        st->ncand = kept;
-        if (best >= 0 && low <= st->excluded) {
-            *proved = low > 0.0 ? low : -INFINITY;
-            return best;
-        }
-        /* Every face again; the second pass keeps them all. */
-        st->ncand = 0;
-        st->excluded = INFINITY;
-        for (int fi = 0; fi < st->nf; ++fi)
-            if (alive(st, fi)) {
-                st->cand[st->ncand++] = fi;
-                st->incand[fi] = 1;
-            }
-        bound = INFINITY;
-    }
-    return -1;
+    double low;
+    int best = agjk__epa_scan_nearest(&st->scan, st->key, st->nf, st->upper, &low);
+    *proved = low > 0.0 && low < INFINITY ? low : -INFINITY;
+    return best;
 }
 
 /* Whether [lower, upper] (depth, with vertex noise) meets the target. */
@@ -568,8 +520,7 @@ void agjk__epa(agjk__minkowski *md, const agjk__epa_input *in, agjk__epa_output 
     st.nv = 0;
     st.nf = 0;
     st.nfree = 0;
-    st.ncand = 0;
-    st.excluded = INFINITY;
+    agjk__epa_scan_init(&st.scan);
     st.stamp = 0;
     st.upper = INFINITY;
     st.estimate = INFINITY;
