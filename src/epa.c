@@ -43,7 +43,7 @@ typedef struct epa_face {
 
 typedef struct epa_state {
     agjk__minkowski *md;
-    agjk__vertex v[MAX_VERTICES];
+    agjk__vertex v[MAX_VERTICES + 1]; /* v[nv]: where a support call writes the next one */
     double vmax[MAX_VERTICES];  /* max |w_i| of each vertex (face_plane's rounding) */
     int vmark[MAX_VERTICES];    /* insert's check that the horizon is simple */
     /* The support hints (md->hint_a, hint_b) that found each vertex: a
@@ -132,8 +132,9 @@ static void follow_rescale(epa_state *st) {
 }
 
 /* The point of D farthest along n (a unit vector to rounding: a face normal
- * or a blow-up direction), and the upper bound it proves. */
-static int support(epa_state *st, agjk_vec3 n, agjk__vertex *s) {
+ * or a blow-up direction), its value <n, s> in *h, and the upper bound it
+ * proves. */
+static int support(epa_state *st, agjk_vec3 n, agjk__vertex *s, double *h_out) {
     agjk__minkowski_support(st->md, v3_neg(n), s); /* argmin <-n, .> */
     ++st->support_calls;
     if (st->md->bad_support) return 0;
@@ -147,6 +148,7 @@ static int support(epa_state *st, agjk_vec3 n, agjk__vertex *s) {
         st->estimate = h;
         st->upper_n = n;
     }
+    *h_out = h;
     return 1;
 }
 
@@ -265,7 +267,9 @@ static int blow_up(epa_state *st, const agjk__vertex *simplex, int count, int *f
         int nd = hull_normals(st->v, st->nv, dirs), added = 0;
         for (int i = 0; i < nd && !added; ++i) {
             agjk__vertex plus, minus;
-            if (!support(st, dirs[i], &plus) || !support(st, v3_neg(dirs[i]), &minus)) return 0;
+            double h;
+            if (!support(st, dirs[i], &plus, &h) || !support(st, v3_neg(dirs[i]), &minus, &h))
+                return 0;
             thr = agjk__epa_floor(st->md); /* the support calls may have grown the size */
             double op = off_hull(st->v, st->nv, plus.w), om = off_hull(st->v, st->nv, minus.w);
             if (op <= thr && om <= thr) continue; /* flat in this direction */
@@ -400,7 +404,7 @@ static int insert(epa_state *st, const agjk__vertex *s, int f0, int hint_a, int 
             return 0;
     /* Commit: the new faces take the removed faces' slots first. */
     int si = st->nv++;
-    st->v[si] = *s;
+    if (s != &st->v[si]) st->v[si] = *s;
     st->vmax[si] = wmax;
     st->vmark[si] = 0;
     st->hint_a[si] = hint_a;
@@ -563,16 +567,17 @@ void agjk__epa(agjk__minkowski *md, const agjk__epa_input *in, agjk__epa_output 
             }
             if (k >= in->max_iterations) break;
             const epa_face *f = &st.f[best];
-            agjk__vertex s;
+            agjk__vertex *s = &st.v[st.nv]; /* (the spare slot: no copy when added) */
+            double h;
             ++out->iterations;
             md->hint_a = st.hint_a[f->v[2]]; /* the face's newest vertex */
             md->hint_b = st.hint_b[f->v[2]];
-            if (!support(&st, f->n, &s)) {
+            if (!support(&st, f->n, s, &h)) {
                 out->outcome = AGJK__EPA_BAD_SUPPORT;
                 break;
             }
             f = &st.f[best]; /* (dist may have been rescaled) */
-            if (!sees(f, s.w)) {
+            if (!(h - f->dist > f->err)) { /* sees(f, s->w) */
                 /* The face lies on D's boundary to rounding: the bounds are as
                  * tight as this polytope can make them. */
                 out->outcome = width_met(&st, in, agjk__epa_noise(md), agjk__epa_floor(md))
@@ -583,7 +588,7 @@ void agjk__epa(agjk__minkowski *md, const agjk__epa_input *in, agjk__epa_output 
                 out->outcome = AGJK__EPA_FULL;
                 break;
             }
-            if (!insert(&st, &s, best, md->hint_a, md->hint_b)) {
+            if (!insert(&st, s, best, md->hint_a, md->hint_b)) {
                 out->outcome = AGJK__EPA_DEGENERATE;
                 break;
             }
@@ -591,8 +596,8 @@ void agjk__epa(agjk__minkowski *md, const agjk__epa_input *in, agjk__epa_output 
         if (best >= 0) face_witness(&st, best, out);
         if (!(st.upper < INFINITY) && best >= 0) {
             /* No support value yet (cap before the first call): take one. */
-            agjk__vertex s;
-            if (!support(&st, st.f[best].n, &s)) out->outcome = AGJK__EPA_BAD_SUPPORT;
+            double h;
+            if (!support(&st, st.f[best].n, &st.v[st.nv], &h)) out->outcome = AGJK__EPA_BAD_SUPPORT;
         }
     }
     /* Twice the solver's noise scale on each end: a support value and a face
