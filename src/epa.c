@@ -48,9 +48,9 @@ typedef struct epa_state {
     int vmark[MAX_VERTICES];    /* insert's check that the horizon is simple */
     /* The support hints (md->hint_a, hint_b) that found each vertex: a
      * support call in a face's normal starts from those of the face's newest
-     * vertex, near its answer (hill climbing on polytopes: 6% fewer
-     * instructions per query on the benchmark's hulls than from wherever the
-     * last call ended; the face's vertex farthest along the normal did worse). */
+     * vertex, near its answer (hill climbing on polytopes: 6% fewer EPA
+     * instructions on the benchmark's hulls than from wherever the last call
+     * ended; the face's vertex farthest along the normal did worse). */
     int hint_a[MAX_VERTICES], hint_b[MAX_VERTICES];
     int nv;
     epa_face f[MAX_FACES];
@@ -267,9 +267,16 @@ static int blow_up(epa_state *st, const agjk__vertex *simplex, int count, int *f
         int nd = hull_normals(st->v, st->nv, dirs), added = 0;
         for (int i = 0; i < nd && !added; ++i) {
             agjk__vertex plus, minus;
-            double h;
-            if (!support(st, dirs[i], &plus, &h) || !support(st, v3_neg(dirs[i]), &minus, &h))
-                return 0;
+            double h, scale;
+            if (!support(st, dirs[i], &plus, &h)) return 0;
+            scale = st->md->scale;
+            if (!support(st, v3_neg(dirs[i]), &minus, &h)) return 0;
+            if (st->md->scale != scale) { /* the second call lowered the units: follow */
+                double f = st->md->scale / scale; /* a power of two: exact */
+                plus.w = v3_scale(plus.w, f);
+                plus.a = v3_scale(plus.a, f);
+                plus.b = v3_scale(plus.b, f);
+            }
             thr = agjk__epa_floor(st->md); /* the support calls may have grown the size */
             double op = off_hull(st->v, st->nv, plus.w), om = off_hull(st->v, st->nv, minus.w);
             if (op <= thr && om <= thr) continue; /* flat in this direction */
