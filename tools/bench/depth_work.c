@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: MIT */
 /* agjk-depth-work: the depth benchmark's overlapping problems run once each by
  * agjk_signed_distance (the depth benchmark's certified column) or by Coal's
- * GJK + EPA, for instruction counts under valgrind's callgrind. Every query
+ * GJK + EPA (its "Coal default" column), for instruction counts under
+ * valgrind's callgrind. Every query
  * is one call of measured_agjk() or measured_coal():
  *
  *   agjk-depth-work agjk|coal ellipsoids|boxes|hulls [PROBLEMS [METHOD [REPEAT]]]
@@ -136,10 +137,10 @@ int main(int argc, char **argv) {
             memset(&d, 0, sizeof d);
             pose_to(&p->pose_a, d.rotation_a, d.translation_a);
             pose_to(&p->pose_b, d.rotation_b, d.translation_b);
-            d.gjk_tolerance = 1e-6;
+            d.gjk_tolerance = 1e-6; /* the depth benchmark's "Coal default" */
             d.gjk_max_iterations = 128;
-            d.epa_tolerance = 1e-6 * p->scale;
-            d.epa_max_iterations = 1000;
+            d.epa_tolerance = 1e-6;
+            d.epa_max_iterations = 64;
             void *cq = coal_adapter_depth_query_new(sa, sb, &d);
             if (!cq) return 3;
             for (int k = 0; k < repeat; ++k) measured_coal(cq);
