@@ -46,6 +46,80 @@ typedef struct agjk__epa_output {
 
 void agjk__epa(agjk__minkowski *md, const agjk__epa_input *in, agjk__epa_output *out);
 
+/* The face slots EPA's nearest-face search visits: the polytope's faces whose
+ * key (the lower bound a face proves, +inf for a free slot) was below the
+ * bound (EPA's upper bound) when offered or last scanned. A face at or beyond
+ * the upper bound is never expanded in absolute mode (were it nearest, the
+ * bounds would have met), and on smooth shapes most faces are. Every face
+ * left out has key >= excluded. */
+#define AGJK__EPA_MAX_FACES (2 * AGJK_EPA_MAX_VERTICES)
+typedef struct agjk__epa_scan {
+    int slot[AGJK__EPA_MAX_FACES];
+    unsigned char listed[AGJK__EPA_MAX_FACES];
+    int count;
+    double excluded;
+} agjk__epa_scan;
+
+static inline void agjk__epa_scan_init(agjk__epa_scan *sc) {
+    sc->count = 0;
+    sc->excluded = INFINITY;
+}
+
+/* A slot used for the first time. */
+static inline void agjk__epa_scan_fresh(agjk__epa_scan *sc, int slot) { sc->listed[slot] = 0; }
+
+/* Slot `slot` received a face of key `key` (a listed slot stays listed). */
+static inline void agjk__epa_scan_offer(agjk__epa_scan *sc, int slot, double key, double bound) {
+    if (sc->listed[slot]) return;
+    if (key < bound) {
+        sc->slot[sc->count++] = slot;
+        sc->listed[slot] = 1;
+    } else if (key < sc->excluded) {
+        sc->excluded = key;
+    }
+}
+
+/* The slot of least key among key[0 .. nslots - 1] (-1 if all are +inf), its
+ * key in *low. Visits the listed slots, drops those at or beyond `bound`, and
+ * lists every slot again when the listed ones cannot prove theirs the least. */
+static inline int agjk__epa_scan_nearest(agjk__epa_scan *sc, const double *key, int nslots,
+                                         double bound, double *low) {
+    for (int pass = 0; pass < 2; ++pass) {
+        int best = -1, kept = 0;
+        double least = INFINITY;
+        for (int i = 0; i < sc->count; ++i) {
+            int fi = sc->slot[i];
+            double k = key[fi];
+            if (k < bound) {
+                sc->slot[kept++] = fi;
+                if (k < least) {
+                    least = k;
+                    best = fi;
+                }
+            } else {
+                sc->listed[fi] = 0;
+                if (k < sc->excluded) sc->excluded = k;
+            }
+        }
+        sc->count = kept;
+        /* The slots left out hold keys >= excluded. */
+        if (best >= 0 && least <= sc->excluded) {
+            *low = least;
+            return best;
+        }
+        /* Every slot again; the second pass keeps them all. */
+        sc->count = 0;
+        sc->excluded = INFINITY;
+        for (int fi = 0; fi < nslots; ++fi) {
+            sc->listed[fi] = key[fi] < INFINITY;
+            if (sc->listed[fi]) sc->slot[sc->count++] = fi;
+        }
+        bound = INFINITY;
+    }
+    *low = INFINITY;
+    return -1;
+}
+
 /* Width the interval on the signed distance must reach (solver units), given
  * the interval [s_lo, s_hi] on the signed distance with margins (solver units)
  * and the tolerance; the floating-point floor raises it in absolute mode. */

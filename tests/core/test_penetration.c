@@ -21,6 +21,7 @@
 #include "check_main.h"
 #include "ref_depth.h"
 #include "testutil.h"
+#include "../../src/epa.h"
 
 static agjk_pose ident(void) { return tu_pose_identity(); }
 
@@ -558,8 +559,62 @@ START_TEST(degenerate_and_capped) {
 }
 END_TEST
 
+/* EPA's nearest-face search (src/epa.h) visits only the faces below a bound
+ * and must still find the least key of all: driven through random face
+ * births, replacements, frees and bounds (above, among and below the keys:
+ * the last forces the full rescan a truthful support callback almost never
+ * reaches), against a brute-force minimum. */
+START_TEST(nearest_face_search) {
+    enum { SLOTS = AGJK__EPA_MAX_FACES };
+    static agjk__epa_scan sc;
+    double key[SLOTS];
+    tu_rng rng;
+    tu_rng_seed(&rng, 11);
+    int nslots = 0, rescans = 0, queries = 0;
+    double bound = INFINITY;
+    agjk__epa_scan_init(&sc);
+    for (int step = 0; step < 40000; ++step) {
+        uint32_t op = tu_uniform_int(&rng, 10);
+        if (op < 3 && nslots < SLOTS) { /* a fresh slot */
+            key[nslots] = tu_uniform(&rng);
+            agjk__epa_scan_fresh(&sc, nslots);
+            agjk__epa_scan_offer(&sc, nslots, key[nslots], bound);
+            ++nslots;
+        } else if (op < 6 && nslots > 0) { /* a slot reused, or freed */
+            int i = (int)tu_uniform_int(&rng, (uint32_t)nslots);
+            key[i] = tu_uniform_int(&rng, 4) == 0 ? INFINITY : tu_uniform(&rng);
+            if (key[i] < INFINITY) agjk__epa_scan_offer(&sc, i, key[i], bound);
+        } else if (op < 8) { /* the bound moves: mostly down, sometimes below every key */
+            uint32_t how = tu_uniform_int(&rng, 4);
+            bound = how == 0 ? INFINITY : how == 1 ? -1.0 : tu_uniform(&rng);
+        } else {
+            double least = INFINITY, low;
+            for (int i = 0; i < nslots; ++i)
+                if (key[i] < least) least = key[i];
+            int listed = sc.count;
+            int best = agjk__epa_scan_nearest(&sc, key, nslots, bound, &low);
+            ++queries;
+            rescans += sc.count > listed; /* only a rescan lists more than it had */
+            if (least < INFINITY) {
+                TU_CHECK(best >= 0 && best < nslots);
+                TU_CHECK(low == least && key[best] == least);
+            } else {
+                TU_CHECK(best == -1 && low == INFINITY);
+            }
+            /* A listed slot is listed once. */
+            int seen[SLOTS] = {0};
+            for (int i = 0; i < sc.count; ++i) TU_CHECK(seen[sc.slot[i]]++ == 0);
+        }
+    }
+    printf("nearest-face search: %d queries against brute force, %d full rescans\n", queries,
+           rescans);
+    TU_CHECK(rescans > 100 && rescans < queries);
+}
+END_TEST
+
 int main(void) {
     Suite *s = suite_create("penetration");
+    TU_ADD(s, nearest_face_search);
     TU_ADD(s, analytic);
     TU_ADD(s, polytopes_vs_sat);
     TU_ADD(s, reference_bb_vs_sat);

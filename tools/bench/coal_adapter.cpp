@@ -195,3 +195,111 @@ extern "C" int coal_adapter_run(const void *shape_a, const void *shape_b,
         return -1;
     }
 }
+
+namespace {
+
+using coal::details::EPA;
+
+// One depth query: GJK and EPA objects built once (EPA's stores sized for
+// epa_max_iterations), as a GJKSolver reused between queries holds them.
+struct DepthQuery {
+    const coal::ShapeBase *a, *b;
+    Transform3s tf_a, tf_b;
+    GJK gjk;
+    EPA epa;
+    MinkowskiDiff md;
+    size_t gjk_max_iterations, epa_max_iterations;
+    double gjk_tolerance, epa_tolerance;
+    Vec3s w0, w1, normal;
+
+    DepthQuery(const coal::ShapeBase *a_, const coal::ShapeBase *b_, const coal_depth_desc *q)
+        : a(a_), b(b_), tf_a(make_transform(q->rotation_a, q->translation_a)),
+          tf_b(make_transform(q->rotation_b, q->translation_b)),
+          gjk((size_t)q->gjk_max_iterations, q->gjk_tolerance),
+          epa((size_t)q->epa_max_iterations, q->epa_tolerance),
+          gjk_max_iterations((size_t)q->gjk_max_iterations),
+          epa_max_iterations((size_t)q->epa_max_iterations), gjk_tolerance(q->gjk_tolerance),
+          epa_tolerance(q->epa_tolerance) {}
+
+    // The timed region (see coal_adapter.h); true when EPA ran.
+    bool run() {
+        md.set(a, b, tf_a, tf_b);
+        gjk.reset(gjk_max_iterations, gjk_tolerance);
+        epa.status = EPA::DidNotRun;
+        const Vec3s guess = -md.ot1;
+        if (gjk.evaluate(md, guess) != GJK::Collision) return false;
+        epa.reset(epa_max_iterations, epa_tolerance);
+        epa.evaluate(gjk, -guess);
+        epa.getWitnessPointsAndNormal(md, w0, w1, normal);
+        return true;
+    }
+
+    void answer(coal_depth_answer *out) const {
+        out->found = epa.status != EPA::DidNotRun;
+        out->gjk_status = (int)gjk.status;
+        out->epa_status = (int)epa.status;
+        out->epa_valid = out->found && (epa.status & EPA::Valid) != 0;
+        out->epa_iterations = out->found ? (int)epa.getNumIterations() : 0;
+        out->depth = out->found ? epa.depth : 0.0;
+        for (int i = 0; i < 3; ++i) out->normal[i] = out->found ? normal[i] : 0.0;
+    }
+};
+
+}  // namespace
+
+extern "C" void *coal_adapter_depth_query_new(const void *shape_a, const void *shape_b,
+                                              const coal_depth_desc *q) {
+    const coal::ShapeBase *a = static_cast<const coal::ShapeBase *>(shape_a);
+    const coal::ShapeBase *b = static_cast<const coal::ShapeBase *>(shape_b);
+    if (!a || !b || q->gjk_max_iterations < 1 || q->epa_max_iterations < 1 ||
+        !(q->gjk_tolerance > 0) || !(q->epa_tolerance > 0))
+        return nullptr;
+    try {
+        return new DepthQuery(a, b, q);
+    } catch (const std::exception &e) {
+        std::fprintf(stderr, "agjk-bench: Coal threw: %s\n", e.what());
+        return nullptr;
+    }
+}
+
+extern "C" int coal_adapter_depth_query_run(void *query) {
+    try {
+        return static_cast<DepthQuery *>(query)->run() ? 1 : 0;
+    } catch (const std::exception &e) {
+        std::fprintf(stderr, "agjk-bench: Coal threw: %s\n", e.what());
+        return -2;
+    }
+}
+
+extern "C" void coal_adapter_depth_query_answer(const void *query, coal_depth_answer *out) {
+    static_cast<const DepthQuery *>(query)->answer(out);
+}
+
+extern "C" void coal_adapter_depth_query_free(void *query) {
+    delete static_cast<DepthQuery *>(query);
+}
+
+extern "C" int coal_adapter_depth(const void *shape_a, const void *shape_b,
+                                  const coal_depth_desc *q, coal_depth_answer *out) {
+    DepthQuery *query =
+        static_cast<DepthQuery *>(coal_adapter_depth_query_new(shape_a, shape_b, q));
+    if (!query) return -1;
+    try {
+        const int reps = q->reps > 0 ? q->reps : 1;
+        std::vector<double> times((size_t)reps);
+        for (int r = 0; r < reps; ++r) {
+            const double t0 = q->now_ns();
+            query->run();
+            times[(size_t)r] = q->now_ns() - t0;
+            sink = query->epa.depth;
+        }
+        query->answer(out);
+        out->time_ns = q->reps > 0 ? q->trimmed_mean(times.data(), reps) : 0.0;
+        delete query;
+        return 0;
+    } catch (const std::exception &e) {
+        std::fprintf(stderr, "agjk-bench: Coal threw: %s\n", e.what());
+        delete query;
+        return -1;
+    }
+}

@@ -40,3 +40,32 @@ int coal_adapter_query_run(void *query) {
 }
 
 void coal_adapter_query_free(void *query) { (void)query; }
+
+int coal_adapter_depth(const void *shape_a, const void *shape_b, const coal_depth_desc *q,
+                       coal_depth_answer *out) {
+    (void)shape_a;
+    (void)shape_b;
+    (void)q;
+    (void)out;
+    return -1;
+}
+
+void *coal_adapter_depth_query_new(const void *shape_a, const void *shape_b,
+                                   const coal_depth_desc *q) {
+    (void)shape_a;
+    (void)shape_b;
+    (void)q;
+    return NULL;
+}
+
+int coal_adapter_depth_query_run(void *query) {
+    (void)query;
+    return -2;
+}
+
+void coal_adapter_depth_query_answer(const void *query, coal_depth_answer *out) {
+    (void)query;
+    (void)out;
+}
+
+void coal_adapter_depth_query_free(void *query) { (void)query; }

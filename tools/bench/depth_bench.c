@@ -8,7 +8,9 @@
 
 #include "ccd_adapter.h"
 #include "ccd_bench.h"
+#include "coal_adapter.h"
 #include "guard.h"
+#include "hull_support.h"
 #include "solve.h"
 #include "stats.h"
 #include "../../tests/common/ref_depth.h"
@@ -28,6 +30,7 @@ typedef struct depth_record {
 typedef struct ctx {
     const bench_set *set;
     const depth_bench_options *o;
+    void **coal_shapes;       /* one per shape of the set, NULL without Coal */
 } ctx;
 
 static volatile double sink;
@@ -36,7 +39,8 @@ static const char *column_name(int c) {
     static const char *const names[DB_COUNT] = {"agjk EPA (certified)",
                                                 "agjk EPA, width <= 1e-4 x scale",
                                                 "libccd GJK+EPA, default",
-                                                "libccd GJK+EPA, tight", "libccd MPR"};
+                                                "libccd GJK+EPA, tight", "libccd MPR",
+                                                "Coal GJK+EPA, default", "Coal GJK+EPA, tight"};
     return names[c];
 }
 
@@ -46,6 +50,65 @@ static double matched_epa_tolerance(double tol, double depth) {
     double w = sqrt(tol);
     if (depth > 0 && tol / (2 * depth) < w) w = tol / (2 * depth);
     return w;
+}
+
+/* Coal's shape for a benchmark shape (the very hull agjk climbs, with Qhull's
+ * triangles, from which Coal builds its vertex graph), as coal_bench.c. */
+static void *coal_shape_of(const bench_shape *s) {
+    coal_shape_desc d;
+    memset(&d, 0, sizeof d);
+    d.size[0] = s->size.x;
+    d.size[1] = s->size.y;
+    d.size[2] = s->size.z;
+    d.kind = s->kind == REF_ELLIPSOID ? COAL_SHAPE_ELLIPSOID : COAL_SHAPE_BOX;
+    if (s->kind == REF_POLYTOPE) {
+        d.kind = COAL_SHAPE_CONVEX;
+        d.triangle_count = bench_hull_triangles(s, &d.triangles);
+        if (d.triangle_count == 0) return NULL;
+        d.vertices = &s->polytope.vertices[0].x;
+        d.vertex_count = s->polytope.vertex_count;
+    }
+    return coal_adapter_shape_new(&d);
+}
+
+static void pose_to(const agjk_pose *p, double r[9], double t[3]) {
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) r[3 * i + j] = p->rotation[i][j];
+    t[0] = p->translation.x;
+    t[1] = p->translation.y;
+    t[2] = p->translation.z;
+}
+
+/* Coal's GJK + EPA: default settings (its narrowphase's: GJK 128 iterations
+ * and tolerance 1e-6, EPA 64 iterations and tolerance 1e-6) or tight (EPA
+ * stops when its support gains at most tolerance x (1 + |w|), |w| about the
+ * depth: the width agjk certifies, divided by 1 + depth; as many iterations
+ * as agjk's store has vertices: Coal sizes its stores by the iteration cap
+ * and its EPA::reset walks all of them, so a cap of 1000 would time that). */
+static int run_coal(const ctx *c, const bench_problem *p, int tight, double width, double depth,
+                    double *value, double *time_ns) {
+    void *sa = c->coal_shapes[p->a], *sb = c->coal_shapes[p->b];
+    coal_depth_desc d;
+    coal_depth_answer a;
+    memset(&d, 0, sizeof d);
+    pose_to(&p->pose_a, d.rotation_a, d.translation_a);
+    pose_to(&p->pose_b, d.rotation_b, d.translation_b);
+    d.gjk_tolerance = 1e-6;
+    d.gjk_max_iterations = 128;
+    d.epa_tolerance = tight ? width / (1.0 + depth) : 1e-6;
+    d.epa_max_iterations = tight ? AGJK_EPA_MAX_VERTICES : 64;
+    d.reps = c->o->reps > 0 ? c->o->reps : 1;
+    d.now_ns = bench_now_ns;
+    d.trimmed_mean = bench_trimmed_mean;
+    if (!sa || !sb || coal_adapter_depth(sa, sb, &d, &a) != 0 || !a.found) return NOT_FOUND;
+    *value = -a.depth;
+    *time_ns = a.time_ns;
+    if (!isfinite(a.depth) || !isfinite(a.normal[0]) || !isfinite(a.normal[1]) ||
+        !isfinite(a.normal[2]))
+        return NAN_ANSWER;
+    /* Coal's statuses: AccuracyReached, or an answer it still calls valid
+     * (iteration cap) or a failure (out of faces or vertices, degenerate). */
+    return a.epa_status == 3 /* EPA::AccuracyReached */ ? OK : NOT_CONVERGED;
 }
 
 static void run_case(void *vctx, int index, void *record) {
@@ -67,7 +130,16 @@ static void run_case(void *vctx, int index, void *record) {
     for (int col = 0; col < DB_COUNT; ++col) {
         double value = 0;
         int result = OK;
-        if (col == DB_AGJK || col == DB_AGJK_1E4) {
+        if (col == DB_COAL || col == DB_COAL_T) {
+            if (!c->coal_shapes) continue;
+            double t_ns = 0;
+            result = run_coal(c, p, col == DB_COAL_T, matched_epa_tolerance(tol, -rec->ref_lo),
+                              -rec->ref_lo, &value, &t_ns);
+            rec->value[col] = value;
+            rec->result[col] = result;
+            rec->time_ns[col] = t_ns;
+            continue;
+        } else if (col == DB_AGJK || col == DB_AGJK_1E4) {
             agjk_options opt = agjk_default_options();
             agjk_signed_result r;
             opt.method = ccd_bench_accel_method(p->family);
@@ -149,9 +221,16 @@ int depth_bench_run(const bench_set *set, const depth_bench_options *o) {
     for (int i = 0; i < n; ++i) problems[i] = set->problems[index[i]];
     view.problems = problems;
     view.problem_count = n;
-    ctx c = {&view, o};
-    fprintf(stderr, "agjk-bench: penetration depth, agjk vs libccd on %d overlapping problems "
-                    "(R = %d, %g s watchdog per case)\n", n, o->reps, o->timeout_seconds);
+    ctx c = {&view, o, NULL};
+    int coal = coal_adapter_available();
+    if (coal) {
+        c.coal_shapes = calloc((size_t)set->shape_count + 1, sizeof *c.coal_shapes);
+        if (!c.coal_shapes) return -1;
+        for (int i = 0; i < set->shape_count; ++i) c.coal_shapes[i] = coal_shape_of(&set->shapes[i]);
+    }
+    fprintf(stderr, "agjk-bench: penetration depth, agjk vs libccd%s on %d overlapping problems "
+                    "(R = %d, %g s watchdog per case)\n", coal ? " and Coal" : "", n, o->reps,
+            o->timeout_seconds);
     guard_run(n, sizeof *recs, run_case, &c, recs, outcome, o->timeout_seconds);
 
     char path[1024];
@@ -180,7 +259,7 @@ int depth_bench_run(const bench_set *set, const depth_bench_options *o) {
     for (int k = 0; k < 2; ++k) {
         FILE *f = outs[k];
         if (!f) continue;
-        fprintf(f, "\n## Penetration depth: agjk vs libccd\n\n"
+        fprintf(f, "\n## Penetration depth: agjk vs libccd and Coal\n\n"
                    "Overlapping problems of the benchmark (signed distances -0.1 ... -1e-4 x scale),\n"
                    "reference: branch and bound over the sphere of directions in long double\n"
                    "(bracket <= 1e-12 x size: smaller errors are at its resolution).\n"
@@ -188,8 +267,13 @@ int depth_bench_run(const bench_set *set, const depth_bench_options *o) {
                    "agjk 1e-4: asked for libccd's default accuracy, an interval of width\n"
                    "<= 1e-4 x scale; libccd default: epa_tolerance 1e-4; libccd tight:\n"
                    "epa_tolerance = the width agjk certifies at that depth.\n"
+                   "Coal %s: GJK + EPA as its narrowphase runs them (EPA after GJK reports\n"
+                   "Collision); default: its defaults (EPA tolerance 1e-6, 64 iterations);\n"
+                   "tight: EPA tolerance = that width / (1 + depth) (Coal stops when a support\n"
+                   "gains <= tolerance x (1 + |w|)), %d iterations. Coal's not converged: EPA\n"
+                   "ended without AccuracyReached (iteration cap, out of faces, degenerate).\n"
                    "Error = |answer - reference|; time = mean of the fastest 90%% of %d runs.\n\n",
-                o->tolerance, o->reps);
+                o->tolerance, coal_adapter_version(), AGJK_EPA_MAX_VERTICES, o->reps);
         fprintf(f, "| family | method | n | median error | max error | median ns | time / libccd EPA tight (median) | not found | NaN | hung/crashed | not converged | outside certified interval |\n"
                    "|---|---|---|---|---|---|---|---|---|---|---|---|\n");
     }
@@ -215,6 +299,7 @@ int depth_bench_run(const bench_set *set, const depth_bench_options *o) {
                 if (r->time_ns[DB_CCD_EPA_T] > 0) v2[nr++] = r->time_ns[col] / r->time_ns[DB_CCD_EPA_T];
             }
             if (cnt == 0) continue;
+            if ((col == DB_COAL || col == DB_COAL_T) && !coal) continue;
             if (col <= DB_AGJK_1E4) missed += miss;
             double emed = median_of(v1, ne), ratio = median_of(v2, nr);
             nr = 0;
@@ -225,6 +310,8 @@ int depth_bench_run(const bench_set *set, const depth_bench_options *o) {
             if (col <= DB_AGJK_1E4) {
                 snprintf(ncs, sizeof ncs, "%d", nc);
                 snprintf(misses, sizeof misses, "%d", miss);
+            } else if (col == DB_COAL || col == DB_COAL_T) {
+                snprintf(ncs, sizeof ncs, "%d", nc);
             }
             for (int k = 0; k < 2; ++k) {
                 FILE *f = outs[k];
@@ -235,6 +322,10 @@ int depth_bench_run(const bench_set *set, const depth_bench_options *o) {
             }
         }
     if (md) fclose(md);
+    if (c.coal_shapes) {
+        for (int i = 0; i < set->shape_count; ++i) coal_adapter_shape_free(c.coal_shapes[i]);
+        free(c.coal_shapes);
+    }
     free(index);
     free(problems);
     free(recs);

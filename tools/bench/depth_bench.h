@@ -1,9 +1,10 @@
 /* SPDX-License-Identifier: MIT */
 /* Penetration depth side by side: agjk_signed_distance (certified EPA) against
- * libccd's ccdGJKPenetration (GJK + EPA) and ccdMPRPenetration, on the
- * overlapping problems of the benchmark, judged against a long double
- * reference (tests/common/ref_depth.h). libccd's EPA loop ignores
- * max_iterations, so every case runs under the watchdog of guard.h. */
+ * libccd's ccdGJKPenetration (GJK + EPA) and ccdMPRPenetration, and Coal's
+ * GJK + EPA when the build has Coal (coal_adapter.h), on the overlapping
+ * problems of the benchmark, judged against a long double reference
+ * (tests/common/ref_depth.h). libccd's EPA loop ignores max_iterations, so
+ * every case runs under the watchdog of guard.h. */
 #ifndef AGJK_BENCH_DEPTH_BENCH_H
 #define AGJK_BENCH_DEPTH_BENCH_H
 
@@ -17,7 +18,10 @@ enum {
     DB_CCD_EPA = 2,   /* ccdGJKPenetration, libccd's default epa_tolerance 1e-4 */
     DB_CCD_EPA_T = 3, /* ccdGJKPenetration, epa_tolerance tightened to agjk's accuracy */
     DB_CCD_MPR = 4,   /* ccdMPRPenetration, default mpr_tolerance */
-    DB_COUNT = 5
+    DB_COAL = 5,      /* Coal's GJK + EPA (coal::details::EPA), its narrowphase defaults:
+                         EPA tolerance 1e-6, 64 iterations (when Coal is built in) */
+    DB_COAL_T = 6,    /* the same, EPA tolerance matched to agjk's width, max_iterations */
+    DB_COUNT = 7
 };
 
 typedef struct depth_bench_options {
