@@ -21,6 +21,8 @@ typedef struct gjk_summary {
     double core_upper;    /* certified upper bound on the core distance (solver units) */
     double core_lower;    /* certified lower bound on the core distance (solver units) */
     agjk_vec3 x;          /* final iterate */
+    agjk_vec3 toward_x;   /* -x / ||x|| */
+    agjk_vec3 normal;     /* unit normal of the plane that certifies core_lower */
     agjk_vec3 a, b;       /* its points on A and B */
     const agjk__vertex *simplex;
     int count;
@@ -42,22 +44,19 @@ static void run_gjk(agjk__minkowski *md, agjk__solve_input *in, agjk__solve_outp
     g->count = out->simplex_count;
     g->iterations = out->iterations;
     g->support_calls = out->support_calls;
-    double core = v3_norm(out->x);
     if (g->intersecting) {
         g->core_upper = out->noise;
         g->core_lower = -INFINITY;
+        g->toward_x = g->normal = v3(0.0, 0.0, 0.0);
         return;
     }
-    /* As agjk_distance: the support plane and eq. 13 of Montaut et al. */
-    double gap = out->gap_valid && out->gap > 0.0 ? out->gap : 0.0;
-    double lower = core - sqrt(gap);
-    if (core > 0.0) {
-        double plane = core - gap / (2.0 * core);
-        if (plane > lower) lower = plane;
-    }
-    /* The rounding of x widens both ends, as in agjk_distance (query.c). */
-    g->core_lower = lower - 2.0 * out->noise;
-    g->core_upper = core + 2.0 * out->noise;
+    /* As agjk_distance (query_setup.c). */
+    agjk__core_bounds cb;
+    agjk__core_bounds_of(out, &cb);
+    g->core_lower = cb.lower;
+    g->core_upper = cb.upper;
+    g->toward_x = cb.toward_x;
+    g->normal = cb.normal;
 }
 
 /* A support callback returned a bad point: nothing computed, a zeroed result. */
@@ -95,8 +94,9 @@ static agjk_status separated_cores(agjk_signed_result *result, const gjk_summary
     result->lower = g->core_lower * inv - margin;
     result->hint_a = md->hint_a;
     result->hint_b = md->hint_b;
-    agjk_vec3 n = v3_normalize(v3_neg(g->x));
-    result->normal = m3_mul(&pose_a->rotation[0][0], n);
+    /* The plane that certifies the lower end; the witness points sit on -x. */
+    result->normal = m3_mul(&pose_a->rotation[0][0], g->normal);
+    agjk_vec3 n = g->toward_x;
     if (witness) {
         result->witness_a = to_world(pose_a, v3_add(v3_scale(g->a, inv), v3_scale(n, margin_a)));
         result->witness_b = to_world(pose_a, v3_sub(v3_scale(g->b, inv), v3_scale(n, margin_b)));

@@ -59,30 +59,15 @@ agjk_status agjk__query_run(const agjk_shape *a, const agjk_pose *pose_a, const 
     }
 
     /* Converged, capped or stalled: x != 0 and gap_valid (see the solver). */
-    double core = v3_norm(out.x);
-    double gap = out.gap_valid && out.gap > 0.0 ? out.gap : 0.0;
-    /* The rounding of x and of the support points (the relative transform, the
-     * combination of simplex vertices): the exact point of D that x stands for
-     * lies within this of x, so it widens the interval at both ends. */
-    double rounding = 2.0 * out.noise;
-    /* Two certified lower bounds on the core distance ||x*||: the support plane,
-     * ||x|| - g / (2 ||x||) = <x, s> / ||x||, and ||x|| - sqrt(g) (eq. 13). */
-    double lower = core - sqrt(gap);
-    if (core > 0.0) {
-        double plane = core - gap / (2.0 * core); /* may be -inf for a denormal x */
-        if (plane > lower) lower = plane;
-    }
-    lower -= rounding;
-    /* ||x*|| <= ||x|| for the exact x; the computed one may be short by the rounding. */
-    double upper = core + rounding;
-    /* From A towards B; v3_normalize copes with a denormal x (zero stays zero). */
-    agjk_vec3 n_local = v3_normalize(v3_neg(out.x));
+    agjk__core_bounds cb;
+    agjk__core_bounds_of(&out, &cb);
+    double gap = cb.gap, lower = cb.lower;
     /* At the floating-point floor an absolute tolerance counts as met (the
      * tolerance is documented to be raised to the floor); a relative one does
      * not, since the relative accuracy it promises was not reached. */
     int converged = out.outcome == AGJK__CONVERGED ||
                     (out.outcome == AGJK__AT_FLOOR && !in.relative);
-    double distance = upper - md.margin;
+    double distance = cb.upper - md.margin;
     double low = lower - md.margin;
     if (distance < 0.0) distance = 0.0;
     if (low < 0.0) low = 0.0;
@@ -102,16 +87,14 @@ agjk_status agjk__query_run(const agjk_shape *a, const agjk_pose *pose_a, const 
                               : out.outcome == AGJK__STALLED      ? AGJK_STOP_NO_PROGRESS
                                                                   : AGJK_STOP_BELOW_PRECISION;
     result->gap = gap * inv * inv; /* a rounding-level negative gap is reported as 0 */
-    /* The normal is that of the plane that certified the lower bound: -x, or
-     * the support direction the adaptive method stopped on (solver.c). */
-    agjk_vec3 n_plane = v3_maxabs(out.direction) > 0.0 ? v3_normalize(v3_neg(out.direction)) : n_local;
-    result->normal = m3_mul(&pose_a->rotation[0][0], n_plane);
+    /* The normal is that of the plane that certified the lower bound. */
+    result->normal = m3_mul(&pose_a->rotation[0][0], cb.normal);
     if (!boolean_mode) {
         result->distance = distance * inv;
         result->bound = (distance - low) * inv;
         if (in.want_witness) {
-            agjk_vec3 wa = v3_scale(v3_add(out.a, v3_scale(n_local, md.margin_a)), inv);
-            agjk_vec3 wb = v3_scale(v3_sub(out.b, v3_scale(n_local, md.margin_b)), inv);
+            agjk_vec3 wa = v3_scale(v3_add(out.a, v3_scale(cb.toward_x, md.margin_a)), inv);
+            agjk_vec3 wb = v3_scale(v3_sub(out.b, v3_scale(cb.toward_x, md.margin_b)), inv);
             result->witness_a = to_world(pose_a, wa);
             result->witness_b = to_world(pose_a, wb);
         }

@@ -75,3 +75,30 @@ int agjk__query_prepare(const agjk_shape *a, const agjk_pose *pose_a, const agjk
     in->warm_count = 0;
     return 1;
 }
+
+void agjk__core_bounds_of(const agjk__solve_output *out, agjk__core_bounds *b) {
+    double core = v3_norm(out->x);
+    double gap = out->gap_valid && out->gap > 0.0 ? out->gap : 0.0;
+    /* The rounding of x and of the support points (the relative transform, the
+     * combination of simplex vertices): the exact point of D that x stands for
+     * lies within this of x, so it widens the interval at both ends. */
+    double rounding = 2.0 * out->noise;
+    /* Two certified lower bounds on the core distance ||x*||: the support plane,
+     * ||x|| - g / (2 ||x||) = <x, s> / ||x||, and ||x|| - sqrt(g) (eq. 13). */
+    double lower = core - sqrt(gap);
+    if (core > 0.0) {
+        double plane = core - gap / (2.0 * core); /* may be -inf for a denormal x */
+        if (plane > lower) lower = plane;
+    }
+    b->core = core;
+    b->gap = gap;
+    b->lower = lower - rounding;
+    /* ||x*|| <= ||x|| for the exact x; the computed one may be short by the rounding. */
+    b->upper = core + rounding;
+    /* From A towards B; v3_normalize copes with a denormal x (zero stays zero). */
+    b->toward_x = v3_normalize(v3_neg(out->x));
+    /* The plane that certified the lower bound: -x, or the support direction
+     * the adaptive method stopped on (solver.c). */
+    b->normal = v3_maxabs(out->direction) > 0.0 ? v3_normalize(v3_neg(out->direction))
+                                                : b->toward_x;
+}

@@ -15,6 +15,20 @@ int agjk__query_prepare(const agjk_shape *a, const agjk_pose *pose_a, const agjk
                         const agjk_pose *pose_b, const agjk_options *options,
                         agjk_options *opts, agjk__minkowski *md, agjk__solve_input *in);
 
+/* The certified interval on the core distance ||x*|| (solver units) after a
+ * solve that ended with x != 0 (converged, capped, stalled, at rounding), and
+ * the unit normal, in A's frame from A towards B, of the support plane that
+ * certifies its lower end: -x, or the direction the adaptive method stopped
+ * on. Shared by agjk_distance and agjk_signed_distance. */
+typedef struct agjk__core_bounds {
+    double core;          /* ||x|| */
+    double gap;           /* the duality gap used (0 when none is valid) */
+    double lower, upper;  /* rounding (2 noise) included at both ends */
+    agjk_vec3 toward_x;   /* -x / ||x||: the witness points' offset direction */
+    agjk_vec3 normal;     /* the certifying plane's unit normal */
+} agjk__core_bounds;
+void agjk__core_bounds_of(const agjk__solve_output *out, agjk__core_bounds *b);
+
 /* The warm-start cache's part of a query (cache.c), reached through pointers
  * so that a program without cached queries links no cache code. */
 struct agjk_cache;
