@@ -55,6 +55,7 @@ static void run_gjk(agjk__minkowski *md, agjk__solve_input *in, agjk__solve_outp
     agjk__core_bounds_of(out, &cb);
     g->core_lower = cb.lower;
     g->core_upper = cb.upper;
+    if (cb.inexact) g->converged = 0;
     g->toward_x = cb.toward_x;
     g->normal = cb.normal;
 }

@@ -65,8 +65,8 @@ agjk_status agjk__query_run(const agjk_shape *a, const agjk_pose *pose_a, const 
     /* At the floating-point floor an absolute tolerance counts as met (the
      * tolerance is documented to be raised to the floor); a relative one does
      * not, since the relative accuracy it promises was not reached. */
-    int converged = out.outcome == AGJK__CONVERGED ||
-                    (out.outcome == AGJK__AT_FLOOR && !in.relative);
+    int converged = !cb.inexact && (out.outcome == AGJK__CONVERGED ||
+                                    (out.outcome == AGJK__AT_FLOOR && !in.relative));
     double distance = cb.upper - md.margin;
     double low = lower - md.margin;
     if (distance < 0.0) distance = 0.0;
@@ -76,7 +76,7 @@ agjk_status agjk__query_run(const agjk_shape *a, const agjk_pose *pose_a, const 
     if (converged && in.relative && !(distance - low <= 0.5 * in.tolerance * low))
         converged = 0;
     agjk_status status;
-    if (out.outcome == AGJK__AT_ROUNDING)
+    if (out.outcome == AGJK__AT_ROUNDING && !cb.inexact)
         status = AGJK_STATUS_CONTACT_WITHIN_TOLERANCE;
     else if (converged)
         status = lower > md.margin ? AGJK_STATUS_SEPARATED : AGJK_STATUS_CONTACT_WITHIN_TOLERANCE;

@@ -93,8 +93,12 @@ void agjk__core_bounds_of(const agjk__solve_output *out, agjk__core_bounds *b) {
     b->core = core;
     b->gap = gap;
     b->lower = lower - rounding;
-    /* ||x*|| <= ||x|| for the exact x; the computed one may be short by the rounding. */
-    b->upper = core + rounding;
+    /* ||x*|| <= ||p|| for p in D: the active set's own point, which x equals to
+     * the rounding unless the projection was ill-conditioned. The plane bound
+     * above holds whatever x is. */
+    double member = v3_norm(out->x_member);
+    b->inexact = member > core + rounding;
+    b->upper = (b->inexact ? member : core) + rounding;
     /* From A towards B; v3_normalize copes with a denormal x (zero stays zero). */
     b->toward_x = v3_normalize(v3_neg(out->x));
     /* The plane that certified the lower bound: -x, or the support direction

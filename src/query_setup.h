@@ -24,6 +24,10 @@ typedef struct agjk__core_bounds {
     double core;          /* ||x|| */
     double gap;           /* the duality gap used (0 when none is valid) */
     double lower, upper;  /* rounding (2 noise) included at both ends */
+    /* x itself was off the active set by more than the rounding (an ill-
+     * conditioned projection): the upper end comes from the active set's own
+     * point, and no accuracy can be claimed from the gap at x. */
+    int inexact;
     agjk_vec3 toward_x;   /* -x / ||x||: the witness points' offset direction */
     agjk_vec3 normal;     /* the certifying plane's unit normal */
 } agjk__core_bounds;

@@ -332,6 +332,32 @@ static const unsigned char support_order[16][3] = {
     {3, 3, 3}, {0, 3, 3}, {1, 3, 3}, {0, 1, 3}, {2, 3, 3}, {0, 2, 3}, {1, 2, 3}, {0, 1, 2}};
 static const unsigned char support_size[16] = {0, 1, 1, 2, 1, 2, 2, 3, 1, 2, 2, 3, 2, 3, 3, 4};
 
+/* A point of the active set's hull near x, computed so that it is a point of
+ * D to the rounding of the vertices whatever the conditioning of the
+ * projection that gave x: sum lambda_i w_i (weights non-negative, adding up
+ * to 1 to rounding). When that is farther than x by more than the rounding
+ * (a sliver's weights are inaccurate), the nearest point of the hull's edges
+ * (each a well-conditioned segment projection) if nearer. Used where ||x||
+ * serves as an upper bound on the core distance. */
+static agjk_vec3 member_point(const solver *sv) {
+    agjk_vec3 p = v3(0.0, 0.0, 0.0);
+    for (int i = 0; i < sv->count; ++i) p = v3_add(p, v3_scale(sv->w[i], sv->lambda[i]));
+    double pp = v3_norm2(p), reach = sqrt(sv->x2) + 2.0 * sv->md->noise;
+    if (pp <= reach * reach) return p;
+    for (int i = 0; i < sv->count; ++i)
+        for (int j = i + 1; j < sv->count; ++j) {
+            agjk_vec3 a = sv->w[i], u = v3_sub(sv->w[j], a);
+            double uu = v3_norm2(u), t = uu > 0.0 ? -v3_dot(a, u) / uu : 0.0;
+            t = t < 0.0 ? 0.0 : t > 1.0 ? 1.0 : t;
+            agjk_vec3 q = v3_lerp2(a, 1.0 - t, sv->w[j], t);
+            if (v3_norm2(q) < pp) {
+                p = q;
+                pp = v3_norm2(q);
+            }
+        }
+    return p;
+}
+
 /* Adds s to the active set and projects the origin onto its hull, keeping only
  * the vertices with positive weight (Alg. 4 line 7 / Alg. 5). Returns 1 when
  * the origin is enclosed by a full tetrahedron. */
@@ -522,7 +548,7 @@ void agjk__solve(agjk__minkowski *md, const agjk__solve_input *in, agjk__solve_o
     first_support(&sv, &s, out);
     agjk_vec3 d0 = sv.x; /* direction of the first support */
     if (support_ends_query(&sv, d0, &s, out)) {
-        out->x = sv.x;
+        out->x = out->x_member = sv.x;
         out->noise = md->noise;
         out->a = out->b = v3(0.0, 0.0, 0.0);
         return;
@@ -670,9 +696,15 @@ void agjk__solve(agjk__minkowski *md, const agjk__solve_input *in, agjk__solve_o
         } else if (at_origin) {
             core_overlap = noise == 0.0; /* plain FW keeps no simplex to certify with */
         }
-        double core_bound2 = at_origin ? 4.0 * noise * noise : x_new2;
-        if (core_overlap ||
-            (margin > noise && core_bound2 < (margin - noise) * (margin - noise))) {
+        /* Through the margins: the core distance is at most ||x_member|| (up to
+         * the points' rounding), or 2 noise with the origin in the simplex. */
+        int margins_overlap = 0;
+        if (margin > noise && (at_origin || x_new2 < (margin - noise) * (margin - noise))) {
+            double m = v3_norm(member_point(&sv));
+            double bound = (at_origin && m < 2.0 * noise ? 2.0 * noise : m) + noise;
+            margins_overlap = bound < margin;
+        }
+        if (core_overlap || margins_overlap) {
             out->outcome = AGJK__INTERSECTING;
             break;
         }
@@ -741,6 +773,7 @@ void agjk__solve(agjk__minkowski *md, const agjk__solve_input *in, agjk__solve_o
     }
 
     out->x = sv.x;
+    out->x_member = sv.count > 0 ? member_point(&sv) : sv.x;
     out->noise = md->noise;
     agjk_vec3 a = v3(0.0, 0.0, 0.0), b = v3(0.0, 0.0, 0.0);
     for (int i = 0; in->want_witness && i < sv.count; ++i) {

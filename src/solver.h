@@ -87,6 +87,11 @@ typedef struct agjk__solve_input {
 typedef struct agjk__solve_output {
     agjk__outcome outcome;
     agjk_vec3 x;         /* final iterate (A's frame) */
+    /* sum lambda_i w_i over the final active set: a point of D up to the
+     * rounding of the points, however ill-conditioned the projection that
+     * gave x was (a sliver's foot can be far off its plane); ||x_member||
+     * is the certified upper bound on the core distance. */
+    agjk_vec3 x_member;
     agjk_vec3 a, b;      /* core points on A and B with a - b = x (A's frame) */
     agjk_vec3 direction; /* separating direction (SEPARATED_EARLY), or the normal of
                             the support plane that certified x when it is not x
