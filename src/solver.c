@@ -420,9 +420,26 @@ static void update_frank_wolfe(solver *sv, const agjk__vertex *s, agjk_vec3 *x) 
     *x = sv->w[0];
 }
 
+/* A non-zero component whose products with others could underflow (both
+ * vectors being brought to unit size first). */
+static int tiny_nonzero(double v) { return v != 0.0 && fabs(v) < 0x1p-500; }
+
+/* Whether d is a positive multiple of x, so that a gap computed with d is
+ * one at x (a certificate). Conservative: both brought to unit size first
+ * (exact), and a component so small that its products could underflow counts
+ * as not parallel, since an underflowing cross product reads 0 for
+ * directions that differ (a Polyak step of 1e-161 against an x of 1e-7 once
+ * passed for parallel and certified a wrong gap). */
 static int parallel(agjk_vec3 d, agjk_vec3 x) {
+    double md = v3_maxabs(d), mx = v3_maxabs(x);
+    if (!(md > 0.0) || !(mx > 0.0) || !(v3_dot(d, x) > 0.0)) return 0;
+    d = v3_scale_to_unit(d, md);
+    x = v3_scale_to_unit(x, mx);
+    if (tiny_nonzero(d.x) || tiny_nonzero(d.y) || tiny_nonzero(d.z) || tiny_nonzero(x.x) ||
+        tiny_nonzero(x.y) || tiny_nonzero(x.z))
+        return 0;
     agjk_vec3 c = v3_cross(d, x);
-    return v3_norm2(c) == 0.0 && v3_dot(d, x) > 0.0;
+    return c.x == 0.0 && c.y == 0.0 && c.z == 0.0;
 }
 
 /* Whether g (< 0) proves a lying support: below -lie_factor ||x|| noise. */
