@@ -64,6 +64,33 @@ int measured_agjk(const agjk_query *q, agjk_result *res) {
 
 int measured_coal(void *query) { return coal_adapter_query_run(query); }
 
+/* The query as bench_solve() asks it: plain GJK, tolerance 1e-8, cap 1000,
+ * no witness points; and the same for Coal. */
+static void agjk_query_init(agjk_query *q, const bench_set *set, const bench_problem *p,
+                            const workload *w) {
+    q->a = &set->shapes[p->a];
+    q->b = &set->shapes[p->b];
+    q->p = p;
+    q->boolean = w->mode == BENCH_BOOLEAN;
+    q->opt = agjk_default_options();
+    q->opt.method = AGJK_METHOD_GJK;
+    q->opt.tolerance = 1e-8;
+    q->opt.max_iterations = 1000;
+    q->opt.compute = AGJK_COMPUTE_DISTANCE;
+}
+
+static void coal_desc_init(coal_query_desc *d, const agjk_query *q) {
+    memset(d, 0, sizeof *d);
+    coal_bench_pose(&q->p->pose_a, d->rotation_a, d->translation_a);
+    coal_bench_pose(&q->p->pose_b, d->rotation_b, d->translation_b);
+    d->method = COAL_GJK;
+    d->boolean = q->boolean;
+    d->tolerance = 1e-8;
+    d->max_iterations = 1000;
+    d->now_ns = bench_now_ns;
+    d->trimmed_mean = bench_trimmed_mean;
+}
+
 /* Timing mode (not for callgrind): each problem run REPS times in a row by
  * agjk, then by Coal, alternating in rounds; per problem the fastest round's
  * mean. A quick same-run comparison while working on the kernel; the
@@ -96,26 +123,10 @@ static void time_one(const bench_set *set, const bench_problem *p, const workloa
                      time_stats *st) {
     agjk_query q;
     coal_query_desc d;
-    q.a = &set->shapes[p->a];
-    q.b = &set->shapes[p->b];
-    q.p = p;
-    q.boolean = w->mode == BENCH_BOOLEAN;
-    q.opt = agjk_default_options();
-    q.opt.method = AGJK_METHOD_GJK;
-    q.opt.tolerance = 1e-8;
-    q.opt.max_iterations = 1000;
-    q.opt.compute = AGJK_COMPUTE_DISTANCE;
-    void *sa = coal_bench_shape(q.a), *sb = coal_bench_shape(q.b), *cq;
-    memset(&d, 0, sizeof d);
-    coal_bench_pose(&p->pose_a, d.rotation_a, d.translation_a);
-    coal_bench_pose(&p->pose_b, d.rotation_b, d.translation_b);
-    d.method = COAL_GJK;
-    d.boolean = q.boolean;
-    d.tolerance = 1e-8;
-    d.max_iterations = 1000;
-    d.now_ns = bench_now_ns;
-    d.trimmed_mean = bench_trimmed_mean;
-    cq = coal_adapter_query_new(sa, sb, &d);
+    agjk_query_init(&q, set, p, w);
+    coal_desc_init(&d, &q);
+    void *sa = coal_bench_shape(q.a), *sb = coal_bench_shape(q.b);
+    void *cq = coal_adapter_query_new(sa, sb, &d);
     if (cq && st->count < TIME_MAX) {
         st->agjk_ns[st->count] = best_round(run_agjk, &q, reps);
         st->coal_ns[st->count] = best_round(run_coal, (const void *)(uintptr_t)cq, reps);
@@ -188,15 +199,7 @@ int main(int argc, char **argv) {
             ++n;
             continue;
         }
-        q.a = &set.shapes[p->a];
-        q.b = &set.shapes[p->b];
-        q.p = p;
-        q.boolean = w->mode == BENCH_BOOLEAN;
-        q.opt = agjk_default_options(); /* as bench_solve() */
-        q.opt.method = AGJK_METHOD_GJK;
-        q.opt.tolerance = 1e-8;
-        q.opt.max_iterations = 1000;
-        q.opt.compute = AGJK_COMPUTE_DISTANCE;
+        agjk_query_init(&q, &set, p, w);
         if (!coal) {
             measured_agjk(&q, &res);
             calls = res.support_calls;
@@ -206,16 +209,7 @@ int main(int argc, char **argv) {
             coal_query_desc d;
             coal_answer a;
             void *sa = coal_bench_shape(q.a), *sb = coal_bench_shape(q.b), *cq;
-            memset(&d, 0, sizeof d);
-            coal_bench_pose(&p->pose_a, d.rotation_a, d.translation_a);
-            coal_bench_pose(&p->pose_b, d.rotation_b, d.translation_b);
-            d.method = COAL_GJK;
-            d.boolean = q.boolean;
-            d.tolerance = 1e-8;
-            d.max_iterations = 1000;
-            d.reps = 0;
-            d.now_ns = bench_now_ns;
-            d.trimmed_mean = bench_trimmed_mean;
+            coal_desc_init(&d, &q);
             cq = coal_adapter_query_new(sa, sb, &d);
             if (!cq || coal_adapter_run(sa, sb, &d, &a) != 0) return 3; /* counts the calls */
             /* Once unmeasured first: Coal sizes its hill-climbing buffers (an

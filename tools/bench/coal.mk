@@ -60,12 +60,13 @@ TOOL_BINS += $(BENCH_CG_BIN)
 # Depth queries one by one for callgrind (agjk_signed_distance or Coal's
 # GJK + EPA on the depth benchmark's problems): see tools/bench/depth_work.c.
 BENCH_DW_BIN := $(OUT)/tools/bench/agjk-depth-work
-$(BENCH_DW_BIN): $(OUT)/tools/bench/depth_work.o $(OUT)/tools/bench/hull_support.o \
-                 $(BENCH_COAL_ADAPTER) $(BENCH_LIB) $(BENCH_MESH_LIB) \
+$(BENCH_DW_BIN): $(OUT)/tools/bench/depth_work.o $(OUT)/tools/bench/coal_bench.o \
+                 $(OUT)/tools/bench/hull_support.o $(BENCH_COAL_ADAPTER) $(BENCH_LIB) $(BENCH_MESH_LIB) \
                  $(OUT)/tests/common/libtestcommon.a $(LIB_A) $(BENCH_COAL_STAMP)
 	$(or $(BENCH_LD),$(CC)) $(ALL_CFLAGS) -o $@ $(OUT)/tools/bench/depth_work.o \
-	    $(OUT)/tools/bench/hull_support.o $(BENCH_COAL_ADAPTER) $(BENCH_LIB) $(BENCH_MESH_LIB) \
-	    $(OUT)/tests/common/libtestcommon.a $(LIB_A) $(BENCH_MESH_LIBS) $(BENCH_COAL_LIBS) -lm
+	    $(OUT)/tools/bench/coal_bench.o $(OUT)/tools/bench/hull_support.o $(BENCH_COAL_ADAPTER) \
+	    $(BENCH_LIB) $(BENCH_MESH_LIB) $(OUT)/tests/common/libtestcommon.a $(LIB_A) \
+	    $(BENCH_MESH_LIBS) $(BENCH_CCD_LIBS) $(BENCH_COAL_LIBS) -lm
 TOOL_BINS += $(BENCH_DW_BIN)
 
 .PHONY: bench-callgrind

@@ -48,6 +48,17 @@ void counting_support(const MinkowskiDiff &md, const Vec3s &dir, Vec3s &s0, Vec3
 
 volatile double sink;
 
+// Runs f, turning an exception from Coal into a message and `failed`.
+template <class F, class R>
+R guarded(F f, R failed) {
+    try {
+        return f();
+    } catch (const std::exception &e) {
+        std::fprintf(stderr, "agjk-bench: Coal threw: %s\n", e.what());
+        return failed;
+    }
+}
+
 }  // namespace
 
 extern "C" int coal_adapter_available(void) { return 1; }
@@ -148,21 +159,11 @@ extern "C" void *coal_adapter_query_new(const void *shape_a, const void *shape_b
     const coal::ShapeBase *a = static_cast<const coal::ShapeBase *>(shape_a);
     const coal::ShapeBase *b = static_cast<const coal::ShapeBase *>(shape_b);
     if (!a || !b || q->max_iterations < 1 || !(q->tolerance > 0)) return nullptr;
-    try {
-        return new Query(a, b, q);
-    } catch (const std::exception &e) {
-        std::fprintf(stderr, "agjk-bench: Coal threw: %s\n", e.what());
-        return nullptr;
-    }
+    return guarded([&]() -> void * { return new Query(a, b, q); }, static_cast<void *>(nullptr));
 }
 
 extern "C" int coal_adapter_query_run(void *query) {
-    try {
-        return verdict_of(static_cast<Query *>(query)->run());
-    } catch (const std::exception &e) {
-        std::fprintf(stderr, "agjk-bench: Coal threw: %s\n", e.what());
-        return -2;
-    }
+    return guarded([&] { return verdict_of(static_cast<Query *>(query)->run()); }, -2);
 }
 
 extern "C" void coal_adapter_query_free(void *query) { delete static_cast<Query *>(query); }
@@ -254,21 +255,12 @@ extern "C" void *coal_adapter_depth_query_new(const void *shape_a, const void *s
     if (!a || !b || q->gjk_max_iterations < 1 || q->epa_max_iterations < 1 ||
         !(q->gjk_tolerance > 0) || !(q->epa_tolerance > 0))
         return nullptr;
-    try {
-        return new DepthQuery(a, b, q);
-    } catch (const std::exception &e) {
-        std::fprintf(stderr, "agjk-bench: Coal threw: %s\n", e.what());
-        return nullptr;
-    }
+    return guarded([&]() -> void * { return new DepthQuery(a, b, q); },
+                   static_cast<void *>(nullptr));
 }
 
 extern "C" int coal_adapter_depth_query_run(void *query) {
-    try {
-        return static_cast<DepthQuery *>(query)->run() ? 1 : 0;
-    } catch (const std::exception &e) {
-        std::fprintf(stderr, "agjk-bench: Coal threw: %s\n", e.what());
-        return -2;
-    }
+    return guarded([&] { return static_cast<DepthQuery *>(query)->run() ? 1 : 0; }, -2);
 }
 
 extern "C" void coal_adapter_depth_query_answer(const void *query, coal_depth_answer *out) {

@@ -9,6 +9,7 @@
 #include "ccd_adapter.h"
 #include "ccd_bench.h"
 #include "coal_adapter.h"
+#include "coal_bench.h"
 #include "guard.h"
 #include "hull_support.h"
 #include "solve.h"
@@ -52,33 +53,6 @@ static double matched_epa_tolerance(double tol, double depth) {
     return w;
 }
 
-/* Coal's shape for a benchmark shape (the very hull agjk climbs, with Qhull's
- * triangles, from which Coal builds its vertex graph), as coal_bench.c. */
-static void *coal_shape_of(const bench_shape *s) {
-    coal_shape_desc d;
-    memset(&d, 0, sizeof d);
-    d.size[0] = s->size.x;
-    d.size[1] = s->size.y;
-    d.size[2] = s->size.z;
-    d.kind = s->kind == REF_ELLIPSOID ? COAL_SHAPE_ELLIPSOID : COAL_SHAPE_BOX;
-    if (s->kind == REF_POLYTOPE) {
-        d.kind = COAL_SHAPE_CONVEX;
-        d.triangle_count = bench_hull_triangles(s, &d.triangles);
-        if (d.triangle_count == 0) return NULL;
-        d.vertices = &s->polytope.vertices[0].x;
-        d.vertex_count = s->polytope.vertex_count;
-    }
-    return coal_adapter_shape_new(&d);
-}
-
-static void pose_to(const agjk_pose *p, double r[9], double t[3]) {
-    for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) r[3 * i + j] = p->rotation[i][j];
-    t[0] = p->translation.x;
-    t[1] = p->translation.y;
-    t[2] = p->translation.z;
-}
-
 /* Coal's GJK + EPA: default settings (its narrowphase's: GJK 128 iterations
  * and tolerance 1e-6, EPA 64 iterations and tolerance 1e-6) or tight (EPA
  * stops when its support gains at most tolerance x (1 + |w|), |w| about the
@@ -91,8 +65,8 @@ static int run_coal(const ctx *c, const bench_problem *p, int tight, double widt
     coal_depth_desc d;
     coal_depth_answer a;
     memset(&d, 0, sizeof d);
-    pose_to(&p->pose_a, d.rotation_a, d.translation_a);
-    pose_to(&p->pose_b, d.rotation_b, d.translation_b);
+    coal_bench_pose(&p->pose_a, d.rotation_a, d.translation_a);
+    coal_bench_pose(&p->pose_b, d.rotation_b, d.translation_b);
     d.gjk_tolerance = 1e-6;
     d.gjk_max_iterations = 128;
     d.epa_tolerance = tight ? width / (1.0 + depth) : 1e-6;
@@ -226,7 +200,7 @@ int depth_bench_run(const bench_set *set, const depth_bench_options *o) {
     if (coal) {
         c.coal_shapes = calloc((size_t)set->shape_count + 1, sizeof *c.coal_shapes);
         if (!c.coal_shapes) return -1;
-        for (int i = 0; i < set->shape_count; ++i) c.coal_shapes[i] = coal_shape_of(&set->shapes[i]);
+        for (int i = 0; i < set->shape_count; ++i) c.coal_shapes[i] = coal_bench_shape(&set->shapes[i]);
     }
     fprintf(stderr, "agjk-bench: penetration depth, agjk vs libccd%s on %d overlapping problems "
                     "(R = %d, %g s watchdog per case)\n", coal ? " and Coal" : "", n, o->reps,

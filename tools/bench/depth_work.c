@@ -23,6 +23,7 @@
 #include <string.h>
 
 #include "coal_adapter.h"
+#include "coal_bench.h"
 #include "hull_support.h"
 #include "problems.h"
 #include "solve.h"
@@ -43,31 +44,6 @@ int measured_agjk(const agjk_query *q, agjk_signed_result *r) {
 }
 
 int measured_coal(void *query) { return coal_adapter_depth_query_run(query); }
-
-static void *coal_shape_of(const bench_shape *s) {
-    coal_shape_desc d;
-    memset(&d, 0, sizeof d);
-    d.size[0] = s->size.x;
-    d.size[1] = s->size.y;
-    d.size[2] = s->size.z;
-    d.kind = s->kind == REF_ELLIPSOID ? COAL_SHAPE_ELLIPSOID : COAL_SHAPE_BOX;
-    if (s->kind == REF_POLYTOPE) {
-        d.kind = COAL_SHAPE_CONVEX;
-        d.triangle_count = bench_hull_triangles(s, &d.triangles);
-        if (d.triangle_count == 0) return NULL;
-        d.vertices = &s->polytope.vertices[0].x;
-        d.vertex_count = s->polytope.vertex_count;
-    }
-    return coal_adapter_shape_new(&d);
-}
-
-static void pose_to(const agjk_pose *p, double r[9], double t[3]) {
-    for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) r[3 * i + j] = p->rotation[i][j];
-    t[0] = p->translation.x;
-    t[1] = p->translation.y;
-    t[2] = p->translation.z;
-}
 
 int main(int argc, char **argv) {
     static const int hull_sizes[2] = {33, 141};
@@ -133,10 +109,10 @@ int main(int argc, char **argv) {
         } else {
             coal_depth_desc d;
             coal_depth_answer a;
-            void *sa = coal_shape_of(q.a), *sb = coal_shape_of(q.b);
+            void *sa = coal_bench_shape(q.a), *sb = coal_bench_shape(q.b);
             memset(&d, 0, sizeof d);
-            pose_to(&p->pose_a, d.rotation_a, d.translation_a);
-            pose_to(&p->pose_b, d.rotation_b, d.translation_b);
+            coal_bench_pose(&p->pose_a, d.rotation_a, d.translation_a);
+            coal_bench_pose(&p->pose_b, d.rotation_b, d.translation_b);
             d.gjk_tolerance = 1e-6; /* the depth benchmark's "Coal default" */
             d.gjk_max_iterations = 128;
             d.epa_tolerance = 1e-6;
