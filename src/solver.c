@@ -46,7 +46,7 @@ typedef struct solver {
 /* After a support that had to lower the scale (agjk__minkowski_rescue_points),
  * brings the solver's own state to the new units. Exact: powers of two. Rare,
  * so out of line. */
-static AGJK__NOINLINE void follow_rescale(solver *sv, agjk_vec3 *d) {
+static AGJK__NOINLINE AGJK__COLD void follow_rescale(solver *sv, agjk_vec3 *d) {
     agjk__minkowski *md = sv->md;
     double f = md->rescaled;
     md->rescaled = 1.0;
@@ -222,7 +222,7 @@ static unsigned shallow_faces(const agjk_vec3 w[4], double noise) {
  * origin has points beyond the margin on both sides. Returns 1 when so; else
  * 0 with *shallow the normal of a plane with too little on its side (zero
  * when the points span no plane at all). */
-static int deep_inside(const agjk_vec3 *p, int n, double noise, agjk_vec3 *shallow) {
+static AGJK__COLD int deep_inside(const agjk_vec3 *p, int n, double noise, agjk_vec3 *shallow) {
     int planes = 0;
     *shallow = v3(0.0, 0.0, 0.0);
     for (int i = 0; i < n; ++i)
@@ -339,11 +339,10 @@ static const unsigned char support_size[16] = {0, 1, 1, 2, 1, 2, 2, 3, 1, 2, 2, 
  * (a sliver's weights are inaccurate), the nearest point of the hull's edges
  * (each a well-conditioned segment projection) if nearer. Used where ||x||
  * serves as an upper bound on the core distance. */
-static agjk_vec3 member_point(const solver *sv) {
-    agjk_vec3 p = v3(0.0, 0.0, 0.0);
-    for (int i = 0; i < sv->count; ++i) p = v3_add(p, v3_scale(sv->w[i], sv->lambda[i]));
-    double pp = v3_norm2(p), reach = sqrt(sv->x2) + 2.0 * sv->md->noise;
-    if (pp <= reach * reach) return p;
+/* The rare part of member_point: the nearest point of the hull's edges, if
+ * nearer than p. */
+static AGJK__NOINLINE AGJK__COLD agjk_vec3 nearest_edge_point(const solver *sv, agjk_vec3 p) {
+    double pp = v3_norm2(p);
     for (int i = 0; i < sv->count; ++i)
         for (int j = i + 1; j < sv->count; ++j) {
             agjk_vec3 a = sv->w[i], u = v3_sub(sv->w[j], a);
@@ -356,6 +355,13 @@ static agjk_vec3 member_point(const solver *sv) {
             }
         }
     return p;
+}
+
+static agjk_vec3 member_point(const solver *sv) {
+    agjk_vec3 p = v3(0.0, 0.0, 0.0);
+    for (int i = 0; i < sv->count; ++i) p = v3_add(p, v3_scale(sv->w[i], sv->lambda[i]));
+    double reach = sqrt(sv->x2) + 2.0 * sv->md->noise;
+    return v3_norm2(p) <= reach * reach ? p : nearest_edge_point(sv, p);
 }
 
 /* Adds s to the active set and projects the origin onto its hull, keeping only
@@ -425,16 +431,18 @@ static void update_frank_wolfe(solver *sv, const agjk__vertex *s, agjk_vec3 *x) 
 static int tiny_nonzero(double v) { return v != 0.0 && fabs(v) < 0x1p-500; }
 
 /* Whether d is a positive multiple of x, so that a gap computed with d is
- * one at x (a certificate). Conservative: both brought to unit size first
- * (exact), and a component so small that its products could underflow counts
- * as not parallel, since an underflowing cross product reads 0 for
+ * one at x (a certificate). Conservative: both brought to unit max-norm
+ * first (a multiple by a power of two, d = x in particular, stays bit for bit
+ * the same), and a component so small that its products could underflow
+ * counts as not parallel, since an underflowing cross product reads 0 for
  * directions that differ (a Polyak step of 1e-161 against an x of 1e-7 once
- * passed for parallel and certified a wrong gap). */
-static int parallel(agjk_vec3 d, agjk_vec3 x) {
+ * passed for parallel and certified a wrong gap). A false "no" costs one
+ * support call. */
+static AGJK__NOINLINE int parallel(agjk_vec3 d, agjk_vec3 x) {
     double md = v3_maxabs(d), mx = v3_maxabs(x);
     if (!(md > 0.0) || !(mx > 0.0) || !(v3_dot(d, x) > 0.0)) return 0;
-    d = v3_scale_to_unit(d, md);
-    x = v3_scale_to_unit(x, mx);
+    d = v3_div(d, md);
+    x = v3_div(x, mx);
     if (tiny_nonzero(d.x) || tiny_nonzero(d.y) || tiny_nonzero(d.z) || tiny_nonzero(x.x) ||
         tiny_nonzero(x.y) || tiny_nonzero(x.z))
         return 0;
