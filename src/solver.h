@@ -20,7 +20,8 @@ typedef struct agjk__momentum {
     double omega;     /* <d, s> / ||d|| of the last support */
     agjk_vec3 x_k;    /* iterate at which the last support was asked */
     agjk_vec3 d_best; /* direction of the best plane */
-    agjk_vec3 a_prev, b_prev; /* points of A and B of the last support */
+    agjk_vec3 a_seen[4], b_seen[4]; /* points of A and B of the last supports (a ring) */
+    int seen_count, seen_next;
     int flat_seen;    /* a point of A or B came back bit for bit (any method) */
     int plain_steps;  /* adaptive: iterations that may take plain steps when far */
 } agjk__momentum;
