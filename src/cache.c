@@ -33,38 +33,48 @@ void agjk_cache_init_sized(agjk_cache *cache, size_t struct_size) {
  * 3.0 / 5.1. */
 #define CACHE_DIRECTION_WEIGHT 100.0
 
-/* FNV-1a over 64-bit words: a check value of the cache's content, so that
- * garbage or hand-edited memory is not mistaken for a simplex of the pair.
- * (Not a defence against a deliberate forger, who could as well corrupt the
- * shapes.) count must be in 0..4. */
-static uint64_t mix(uint64_t h, const void *p, size_t n) {
-    uint64_t w = 0;
-    memcpy(&w, p, n <= sizeof w ? n : sizeof w);
-    return (h ^ w) * 0x100000001b3u;
+/* A check value of the cache's content, so that garbage or hand-edited memory
+ * is not mistaken for a simplex of the pair (not a defence against a
+ * deliberate forger, who could as well corrupt the shapes): FNV-1a steps over
+ * 64-bit words in three independent lanes, one per coordinate, so that the
+ * multiplications overlap (one chain of them was a tenth of a warm query's
+ * time on boxes). The pair's pointers are left out: they are compared with
+ * the query's own. count must be in 0..4. */
+#define CHECK_PRIME 0x100000001b3u
+
+static uint64_t bits(double v) {
+    uint64_t w;
+    memcpy(&w, &v, sizeof w);
+    return w;
 }
 
-static uint64_t mix_vec(uint64_t h, agjk_vec3 v) {
-    h = mix(h, &v.x, sizeof v.x);
-    h = mix(h, &v.y, sizeof v.y);
-    return mix(h, &v.z, sizeof v.z);
+static void mix_vec(uint64_t h[3], agjk_vec3 v) {
+    h[0] = (h[0] ^ bits(v.x)) * CHECK_PRIME;
+    h[1] = (h[1] ^ bits(v.y)) * CHECK_PRIME;
+    h[2] = (h[2] ^ bits(v.z)) * CHECK_PRIME;
 }
 
 static uint64_t cache_check(const agjk_cache *c) {
-    uint64_t h = 0xcbf29ce484222325u;
-    h = mix(h, &c->count, sizeof c->count);
-    h = mix(h, &c->hint_a, sizeof c->hint_a);
-    h = mix(h, &c->hint_b, sizeof c->hint_b);
-    h = mix(h, &c->flags, sizeof c->flags);
-    h = mix(h, &c->support_a, sizeof c->support_a);
-    h = mix(h, &c->support_b, sizeof c->support_b);
-    h = mix(h, &c->data_a, sizeof c->data_a);
-    h = mix(h, &c->data_b, sizeof c->data_b);
+    uint64_t h[3] = {0xcbf29ce484222325u, 0x84222325cbf29ce4u, 0x2325cbf29ce48422u};
+    h[0] = (h[0] ^ (uint32_t)c->count) * CHECK_PRIME;
+    h[1] = (h[1] ^ (((uint64_t)(uint32_t)c->hint_a << 32) | (uint32_t)c->hint_b)) * CHECK_PRIME;
+    h[2] = (h[2] ^ c->flags) * CHECK_PRIME;
     for (int i = 0; i < c->count; ++i) {
-        h = mix_vec(h, c->point_a[i]);
-        h = mix_vec(h, c->point_b[i]);
+        mix_vec(h, c->point_a[i]);
+        mix_vec(h, c->point_b[i]);
     }
-    h = mix_vec(h, c->direction);
-    return mix_vec(h, c->direction_prev);
+    mix_vec(h, c->direction);
+    mix_vec(h, c->direction_prev);
+    return (h[0] ^ (h[1] * CHECK_PRIME)) * CHECK_PRIME ^ h[2];
+}
+
+/* Whether p[0..n-1] are all finite and within AGJK_MAX_COORDINATE: one test
+ * on the sum of their absolute coordinates (NaN and Inf propagate; a sum out of
+ * range only means a cold start). */
+static int in_range(const agjk_vec3 *p, int n) {
+    double sum = 0.0;
+    for (int i = 0; i < n; ++i) sum += v3_norm1(p[i]);
+    return sum <= AGJK_MAX_COORDINATE;
 }
 
 /* Whether the cache was filled for the pair (a, b) and holds sane values. */
@@ -75,7 +85,7 @@ static int cache_usable(const agjk_cache *c, const agjk_shape *a, const agjk_sha
         c->data_b != b->data)
         return 0;
     if (c->check != cache_check(c)) return 0;
-    return v3_in_range(c->direction) && v3_in_range(c->direction_prev);
+    return in_range(&c->direction, 2);
 }
 
 /* 2 n1 - n0 for the unit directions n1 (last) and n0 (before), or n1. */
@@ -93,21 +103,21 @@ int agjk__cache_load(const agjk_cache *cache, const agjk_shape *a, const agjk_sh
     if (!cache || !cache_usable(cache, a, b)) return 0;
     md->hint_a = cache->hint_a;
     md->hint_b = cache->hint_b;
-    double last = v3_norm(cache->direction);
-    int simplex = (cache->flags & AGJK_CACHE_FLAT) || cache->count == 4 || !(last > 0.0);
-    if (cache->count == 0 && !(last > 0.0)) return 0;
+    int has_direction = v3_maxabs(cache->direction) > 0.0;
+    int simplex = (cache->flags & AGJK_CACHE_FLAT) || cache->count == 4 || !has_direction;
+    if (cache->count == 0 && !has_direction) return 0;
     if (!simplex || cache->count == 0 || in->method == AGJK_METHOD_FRANK_WOLFE) {
         /* A direction only (Frank-Wolfe's active set is its iterate alone). */
-        if (last > 0.0) {
+        if (has_direction) {
             in->x0 = v3_scale(extrapolate(cache->direction, cache->direction_prev),
-                              CACHE_DIRECTION_WEIGHT * last);
+                              CACHE_DIRECTION_WEIGHT * v3_norm(cache->direction));
             in->x0_given = 1;
         }
         return 1;
     }
     agjk_vec3 w[4];
-    for (int i = 0; i < cache->count; ++i)
-        if (!v3_in_range(cache->point_a[i]) || !v3_in_range(cache->point_b[i])) return 0;
+    if (!in_range(cache->point_a, cache->count) || !in_range(cache->point_b, cache->count))
+        return 0;
     for (int i = 0; i < cache->count; ++i) {
         agjk__vertex *v = &in->warm[i];
         /* A's frame is A's local frame; B's points move with the relative pose. */
@@ -117,7 +127,7 @@ int agjk__cache_load(const agjk_cache *cache, const agjk_shape *a, const agjk_sh
         w[i] = v->w;
     }
     agjk_vec3 x;
-    unsigned mask = agjk__simplex_project(w, cache->count, in->warm_lambda, &x);
+    unsigned mask = agjk__simplex_project_gjk(w, cache->count, in->warm_lambda, &x);
     in->warm_mask = mask;
     in->warm_x = x;
     /* The first support goes in direction x, the projection; when the points
@@ -163,16 +173,18 @@ void agjk__cache_save(agjk_cache *cache, const agjk_shape *a, const agjk_shape *
     double dn = v3_norm(out->direction); /* solver units: in range, squares finite */
     if (dn > 0.0) cache->direction = v3_scale(out->direction, length / dn);
     int n = out->simplex_count < 0 ? 0 : out->simplex_count > 4 ? 4 : out->simplex_count;
+    /* Back to B's local frame: R^T (b - t) (rounding of a few ulps, within the
+     * tolerance warm_consistent allows, solver.c); to the caller's units by
+     * inv, a power of two (exact), skipped when 1 (the warm start's case). */
     for (int i = 0; i < n; ++i) {
-        agjk_vec3 pa = v3_scale(out->simplex[i].a, inv);
-        /* Back to B's local frame: R^T (b - t) (rounding of a few ulps, within
-         * the tolerance agjk__warm_consistent allows). */
-        agjk_vec3 pb = m3_tmul(&md->rotation[0][0],
-                               v3_sub(v3_scale(out->simplex[i].b, inv),
-                                      v3_scale(md->translation, inv)));
-        cache->point_a[i] = pa;
-        cache->point_b[i] = pb;
+        cache->point_a[i] = out->simplex[i].a;
+        cache->point_b[i] = m3_tmul(&md->rotation[0][0], v3_sub(out->simplex[i].b, md->translation));
     }
+    if (inv != 1.0)
+        for (int i = 0; i < n; ++i) {
+            cache->point_a[i] = v3_scale(cache->point_a[i], inv);
+            cache->point_b[i] = v3_scale(cache->point_b[i], inv);
+        }
     cache->count = n;
     cache->check = cache_check(cache);
 }
