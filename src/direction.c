@@ -94,7 +94,7 @@ void agjk__momentum_init(agjk__momentum *m, agjk_method method, agjk_vec3 x0, in
     m->x_k = x0;
     m->d_best = x0;
     m->seen_count = m->seen_next = 0;
-    m->x0_norm = -1.0;
+    m->x0_norm2 = -1.0;
     m->flat_seen = 0;
     /* A guess of x* (a cache's, a caller's) is worth keeping in the momentum:
      * plain steps would drop it at once. */
@@ -108,7 +108,7 @@ void agjk__momentum_rescale(agjk__momentum *m, double f) {
     m->plane *= f;
     m->plane_before *= f;
     m->omega *= f;
-    m->x0_norm *= f;
+    m->x0_norm2 *= f * f;
     for (int i = 0; i < m->seen_count; ++i) {
         m->a_seen[i] = v3_scale(m->a_seen[i], f);
         m->b_seen[i] = v3_scale(m->b_seen[i], f);
@@ -119,7 +119,7 @@ void agjk__momentum_plane(agjk__momentum *m, agjk_vec3 d, agjk_vec3 s, agjk_vec3
     double dn = v3_norm(d);
     m->omega = dn > 0.0 ? v3_dot(d, s) / dn : -INFINITY;
     m->plane_before = m->plane;
-    if (m->x0_norm < 0.0) m->x0_norm = v3_norm(x); /* the first plane: x = x_0 */
+    if (m->x0_norm2 < 0.0) m->x0_norm2 = v3_norm2(x); /* the first plane: x = x_0 */
     if (m->omega > m->plane) {
         m->plane = m->omega;
         m->d_best = d;
@@ -197,7 +197,8 @@ agjk_vec3 agjk__momentum_direction(const agjk__momentum *m, int k, agjk_vec3 x) 
     case AGJK_METHOD_ADAPTIVE: {
         double xn = v3_norm(x);
         int far = m->plane >= ADAPTIVE_CLOSE_RATIO * xn &&
-                  (m->phase == AGJK__PHASE_POLYAK || xn >= ADAPTIVE_FAR_SIZE * m->x0_norm);
+                  (m->phase == AGJK__PHASE_POLYAK ||
+                   xn * xn >= ADAPTIVE_FAR_SIZE * ADAPTIVE_FAR_SIZE * m->x0_norm2);
         if (k <= m->plain_steps &&
             (far || (k == 1 && m->plane <= -ADAPTIVE_OPPOSITE_RATIO * xn))) {
             /* Far apart, or s_0 opposite x_0: plain GJK steps first. */

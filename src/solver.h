@@ -22,7 +22,7 @@ typedef struct agjk__momentum {
     agjk_vec3 d_best; /* direction of the best plane */
     agjk_vec3 a_seen[4], b_seen[4]; /* points of A and B of the last supports (a ring) */
     int seen_count, seen_next;
-    double x0_norm;   /* ||x_0||, solver units (-1 before the first support) */
+    double x0_norm2;  /* ||x_0||^2, solver units (-1 before the first support) */
     int flat_seen;    /* a point of A or B came back bit for bit (any method) */
     int plain_steps;  /* adaptive: iterations that may take plain steps when far */
 } agjk__momentum;
