@@ -23,15 +23,21 @@ void agjk_cache_init_sized(agjk_cache *cache, size_t struct_size) {
 
 /* Curved shapes: the first direction is the last iterate's, extrapolated
  * linearly from the query before (smooth motion turns the contact normal
- * steadily), with this many times the last distance as its length: the
- * momentum of the default method (and the others) then keeps the directions
- * near it for a few iterations, probing directions around it, instead of
- * zig-zagging as plain GJK steps do. Measured on the coherent-motion benchmark
- * (ellipsoids, support calls per query, slow / fast motion): 10: 5.5 / 3.9,
- * 30: 3.6 / 2.9, 100: 1.9 / 2.7, 200: 1.5 / 2.8, 1000: 2.3 / 3.7; plain GJK
- * steps from the same direction: 7.7 / 5.9; without the extrapolation (100):
- * 3.0 / 5.1. */
+ * steadily), with a length of `weight` times the last distance: the momentum
+ * of the default method (Nesterov from the start for a given x_0,
+ * direction.c) then keeps the directions near it for a few iterations,
+ * probing around it, instead of zig-zagging as plain GJK steps do. The
+ * slower the normal turns (|n_1 - n_0| between the last two queries), the
+ * better the extrapolation and the more it is trusted: weight =
+ * CACHE_TURN_TRUST / |n_1 - n_0| within [10, 1000], CACHE_DIRECTION_WEIGHT
+ * without a query before. Measured on the coherent-motion benchmark
+ * (ellipsoids, support calls per query, slow / fast motion): a fixed weight
+ * of 30: 3.5 / 3.0, 100: 1.9 / 3.1, 200: 1.5 / 3.6, 1000: 2.1 / 4.5; from
+ * the turn with 0.02: 3.9 / 3.5, 0.05: 2.5 / 3.1, 0.1: 1.9 / 2.9, 0.5: 1.7 /
+ * 3.5 (with the Polyak phase first, as before: a fixed 100 gave 3.0 / 2.8,
+ * 0.1 from the turn 2.8 / 3.5). */
 #define CACHE_DIRECTION_WEIGHT 100.0
+#define CACHE_TURN_TRUST 0.1
 
 /* A check value of the cache's content, so that garbage or hand-edited memory
  * is not mistaken for a simplex of the pair (not a defence against a
@@ -88,11 +94,17 @@ static int cache_usable(const agjk_cache *c, const agjk_shape *a, const agjk_sha
     return in_range(&c->direction, 2);
 }
 
-/* 2 n1 - n0 for the unit directions n1 (last) and n0 (before), or n1. */
-static agjk_vec3 extrapolate(agjk_vec3 last, agjk_vec3 before) {
+/* 2 n1 - n0 for the unit directions n1 (last) and n0 (before), or n1; and
+ * the weight of the result (see CACHE_DIRECTION_WEIGHT). */
+static agjk_vec3 extrapolate(agjk_vec3 last, agjk_vec3 before, double *weight) {
     agjk_vec3 n1 = v3_normalize(last);
+    *weight = CACHE_DIRECTION_WEIGHT;
     if (v3_maxabs(before) == 0.0) return n1;
     agjk_vec3 n0 = v3_normalize(before);
+    double turn = v3_norm(v3_sub(n1, n0));
+    *weight = turn * 1000.0 <= CACHE_TURN_TRUST ? 1000.0
+              : turn * 10.0 >= CACHE_TURN_TRUST ? 10.0
+                                                 : CACHE_TURN_TRUST / turn;
     agjk_vec3 p = v3_normalize(v3_sub(v3_scale(n1, 2.0), n0));
     return v3_dot(p, n1) > 0.5 ? p : n1; /* a jump, not a steady turn */
 }
@@ -109,8 +121,9 @@ int agjk__cache_load(const agjk_cache *cache, const agjk_shape *a, const agjk_sh
     if (!simplex || cache->count == 0 || in->method == AGJK_METHOD_FRANK_WOLFE) {
         /* A direction only (Frank-Wolfe's active set is its iterate alone). */
         if (has_direction) {
-            in->x0 = v3_scale(extrapolate(cache->direction, cache->direction_prev),
-                              CACHE_DIRECTION_WEIGHT * v3_norm(cache->direction));
+            double weight;
+            agjk_vec3 n = extrapolate(cache->direction, cache->direction_prev, &weight);
+            in->x0 = v3_scale(n, weight * v3_norm(cache->direction));
             in->x0_given = 1;
         }
         return 1;
