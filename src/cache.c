@@ -109,6 +109,63 @@ static agjk_vec3 extrapolate(agjk_vec3 last, agjk_vec3 before, double *weight) {
     return v3_dot(p, n1) > 0.5 ? p : n1; /* a jump, not a steady turn */
 }
 
+/* The cached simplex is the last query's final one, every vertex with a
+ * positive weight; after a small motion the origin usually still projects
+ * into its interior (or, 4 points, lies inside it). Then the answer follows
+ * from one small linear system, checked with margins far above its rounding
+ * (relative weights above 1e-6 with a determinant above 1e-6 of its scale,
+ * where the rounding of a weight is below 1e-9); otherwise, and for 1 point,
+ * agjk__simplex_project_gjk decides. Returns its mask, or 0 (undecided). */
+#define INSIDE_MARGIN 1e-6
+static unsigned project_interior(const agjk_vec3 *w, int n, double lambda[4], agjk_vec3 *x) {
+    if (n == 2) {
+        agjk_vec3 e = v3_sub(w[1], w[0]);
+        double ee = v3_norm2(e), t = -v3_dot(w[0], e);
+        if (!(t > INSIDE_MARGIN * ee && ee - t > INSIDE_MARGIN * ee)) return 0;
+        lambda[1] = t / ee;
+        lambda[0] = 1.0 - lambda[1];
+        *x = v3_lerp2(w[0], lambda[0], w[1], lambda[1]);
+        return 0x3u;
+    }
+    if (n == 3) {
+        agjk_vec3 e1 = v3_sub(w[1], w[0]), e2 = v3_sub(w[2], w[0]);
+        double a11 = v3_norm2(e1), a12 = v3_dot(e1, e2), a22 = v3_norm2(e2);
+        double b1 = -v3_dot(w[0], e1), b2 = -v3_dot(w[0], e2);
+        double det = a11 * a22 - a12 * a12;
+        if (!(det > INSIDE_MARGIN * a11 * a22)) return 0;
+        double l1 = b1 * a22 - b2 * a12, l2 = a11 * b2 - a12 * b1, m = INSIDE_MARGIN * det;
+        if (!(l1 > m && l2 > m && det - l1 - l2 > m)) return 0;
+        lambda[1] = l1 / det;
+        lambda[2] = l2 / det;
+        lambda[0] = 1.0 - lambda[1] - lambda[2];
+        *x = v3_add(v3_lerp2(w[0], lambda[0], w[1], lambda[1]), v3_scale(w[2], lambda[2]));
+        return 0x7u;
+    }
+    if (n == 4) {
+        /* Weights of the origin: ratios of signed volumes. */
+        agjk_vec3 e1 = v3_sub(w[1], w[0]), e2 = v3_sub(w[2], w[0]), e3 = v3_sub(w[3], w[0]);
+        agjk_vec3 c23 = v3_cross(e2, e3);
+        double vol = v3_dot(e1, c23);
+        double scale = v3_norm(e1) * v3_norm(e2) * v3_norm(e3);
+        if (vol < 0.0) vol = -vol, scale = -scale; /* orientation: positive weights */
+        if (!(vol > INSIDE_MARGIN * (scale < 0.0 ? -scale : scale))) return 0;
+        double sg = scale < 0.0 ? -1.0 : 1.0;
+        agjk_vec3 o = v3_neg(w[0]);
+        double l1 = sg * v3_dot(o, c23);
+        double l2 = sg * v3_dot(e1, v3_cross(o, e3));
+        double l3 = sg * v3_dot(e1, v3_cross(e2, o));
+        double m = INSIDE_MARGIN * vol;
+        if (!(l1 > m && l2 > m && l3 > m && vol - l1 - l2 - l3 > m)) return 0;
+        lambda[1] = l1 / vol;
+        lambda[2] = l2 / vol;
+        lambda[3] = l3 / vol;
+        lambda[0] = 1.0 - lambda[1] - lambda[2] - lambda[3];
+        *x = v3(0.0, 0.0, 0.0);
+        return 0xFu;
+    }
+    return 0;
+}
+
 int agjk__cache_load(const agjk_cache *cache, const agjk_shape *a, const agjk_shape *b,
                      agjk__minkowski *md, agjk__solve_input *in) {
     in->warm_count = 0;
@@ -140,7 +197,8 @@ int agjk__cache_load(const agjk_cache *cache, const agjk_shape *a, const agjk_sh
         w[i] = v->w;
     }
     agjk_vec3 x;
-    unsigned mask = agjk__simplex_project_gjk(w, cache->count, in->warm_lambda, &x);
+    unsigned mask = project_interior(w, cache->count, in->warm_lambda, &x);
+    if (!mask) mask = agjk__simplex_project_gjk(w, cache->count, in->warm_lambda, &x);
     in->warm_mask = mask;
     in->warm_x = x;
     /* The first support goes in direction x, the projection; when the points
