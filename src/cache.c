@@ -23,48 +23,64 @@ void agjk_cache_init_sized(agjk_cache *cache, size_t struct_size) {
 
 /* Curved shapes: the first direction is the last iterate's, extrapolated
  * linearly from the query before (smooth motion turns the contact normal
- * steadily), with this many times the last distance as its length: the
- * momentum of the default method (and the others) then keeps the directions
- * near it for a few iterations, probing directions around it, instead of
- * zig-zagging as plain GJK steps do. Measured on the coherent-motion benchmark
- * (ellipsoids, support calls per query, slow / fast motion): 10: 5.5 / 3.9,
- * 30: 3.6 / 2.9, 100: 1.9 / 2.7, 200: 1.5 / 2.8, 1000: 2.3 / 3.7; plain GJK
- * steps from the same direction: 7.7 / 5.9; without the extrapolation (100):
- * 3.0 / 5.1. */
+ * steadily), with a length of `weight` times the last distance: the momentum
+ * of the default method (Nesterov from the start for a given x_0,
+ * direction.c) then keeps the directions near it for a few iterations,
+ * probing around it, instead of zig-zagging as plain GJK steps do. The
+ * slower the normal turns (|n_1 - n_0| between the last two queries), the
+ * better the extrapolation and the more it is trusted: weight =
+ * CACHE_TURN_TRUST / |n_1 - n_0| within [10, 1000], CACHE_DIRECTION_WEIGHT
+ * without a query before. Measured on the coherent-motion benchmark
+ * (ellipsoids, support calls per query, slow / fast motion): a fixed weight
+ * of 30: 3.5 / 3.0, 100: 1.9 / 3.1, 200: 1.5 / 3.6, 1000: 2.1 / 4.5; from
+ * the turn with 0.02: 3.9 / 3.5, 0.05: 2.5 / 3.1, 0.1: 1.9 / 2.9, 0.5: 1.7 /
+ * 3.5 (with the Polyak phase first, as before: a fixed 100 gave 3.0 / 2.8,
+ * 0.1 from the turn 2.8 / 3.5). */
 #define CACHE_DIRECTION_WEIGHT 100.0
+#define CACHE_TURN_TRUST 0.1
 
-/* FNV-1a over 64-bit words: a check value of the cache's content, so that
- * garbage or hand-edited memory is not mistaken for a simplex of the pair.
- * (Not a defence against a deliberate forger, who could as well corrupt the
- * shapes.) count must be in 0..4. */
-static uint64_t mix(uint64_t h, const void *p, size_t n) {
-    uint64_t w = 0;
-    memcpy(&w, p, n <= sizeof w ? n : sizeof w);
-    return (h ^ w) * 0x100000001b3u;
+/* A check value of the cache's content, so that garbage or hand-edited memory
+ * is not mistaken for a simplex of the pair (not a defence against a
+ * deliberate forger, who could as well corrupt the shapes): FNV-1a steps over
+ * 64-bit words in three independent lanes, one per coordinate, so that the
+ * multiplications overlap (one chain of them was a tenth of a warm query's
+ * time on boxes). The pair's pointers are left out: they are compared with
+ * the query's own. count must be in 0..4. */
+#define CHECK_PRIME 0x100000001b3u
+
+static uint64_t bits(double v) {
+    uint64_t w;
+    memcpy(&w, &v, sizeof w);
+    return w;
 }
 
-static uint64_t mix_vec(uint64_t h, agjk_vec3 v) {
-    h = mix(h, &v.x, sizeof v.x);
-    h = mix(h, &v.y, sizeof v.y);
-    return mix(h, &v.z, sizeof v.z);
+static void mix_vec(uint64_t h[3], agjk_vec3 v) {
+    h[0] = (h[0] ^ bits(v.x)) * CHECK_PRIME;
+    h[1] = (h[1] ^ bits(v.y)) * CHECK_PRIME;
+    h[2] = (h[2] ^ bits(v.z)) * CHECK_PRIME;
 }
 
 static uint64_t cache_check(const agjk_cache *c) {
-    uint64_t h = 0xcbf29ce484222325u;
-    h = mix(h, &c->count, sizeof c->count);
-    h = mix(h, &c->hint_a, sizeof c->hint_a);
-    h = mix(h, &c->hint_b, sizeof c->hint_b);
-    h = mix(h, &c->flags, sizeof c->flags);
-    h = mix(h, &c->support_a, sizeof c->support_a);
-    h = mix(h, &c->support_b, sizeof c->support_b);
-    h = mix(h, &c->data_a, sizeof c->data_a);
-    h = mix(h, &c->data_b, sizeof c->data_b);
+    uint64_t h[3] = {0xcbf29ce484222325u, 0x84222325cbf29ce4u, 0x2325cbf29ce48422u};
+    h[0] = (h[0] ^ (uint32_t)c->count) * CHECK_PRIME;
+    h[1] = (h[1] ^ (((uint64_t)(uint32_t)c->hint_a << 32) | (uint32_t)c->hint_b)) * CHECK_PRIME;
+    h[2] = (h[2] ^ c->flags) * CHECK_PRIME;
     for (int i = 0; i < c->count; ++i) {
-        h = mix_vec(h, c->point_a[i]);
-        h = mix_vec(h, c->point_b[i]);
+        mix_vec(h, c->point_a[i]);
+        mix_vec(h, c->point_b[i]);
     }
-    h = mix_vec(h, c->direction);
-    return mix_vec(h, c->direction_prev);
+    mix_vec(h, c->direction);
+    mix_vec(h, c->direction_prev);
+    return (h[0] ^ (h[1] * CHECK_PRIME)) * CHECK_PRIME ^ h[2];
+}
+
+/* Whether p[0..n-1] are all finite and within AGJK_MAX_COORDINATE: one test
+ * on the sum of their absolute coordinates (NaN and Inf propagate; a sum out of
+ * range only means a cold start). */
+static int in_range(const agjk_vec3 *p, int n) {
+    double sum = 0.0;
+    for (int i = 0; i < n; ++i) sum += v3_norm1(p[i]);
+    return sum <= AGJK_MAX_COORDINATE;
 }
 
 /* Whether the cache was filled for the pair (a, b) and holds sane values. */
@@ -75,16 +91,79 @@ static int cache_usable(const agjk_cache *c, const agjk_shape *a, const agjk_sha
         c->data_b != b->data)
         return 0;
     if (c->check != cache_check(c)) return 0;
-    return v3_in_range(c->direction) && v3_in_range(c->direction_prev);
+    return in_range(&c->direction, 2);
 }
 
-/* 2 n1 - n0 for the unit directions n1 (last) and n0 (before), or n1. */
-static agjk_vec3 extrapolate(agjk_vec3 last, agjk_vec3 before) {
+/* 2 n1 - n0 for the unit directions n1 (last) and n0 (before), or n1; and
+ * the weight of the result (see CACHE_DIRECTION_WEIGHT). */
+static agjk_vec3 extrapolate(agjk_vec3 last, agjk_vec3 before, double *weight) {
     agjk_vec3 n1 = v3_normalize(last);
+    *weight = CACHE_DIRECTION_WEIGHT;
     if (v3_maxabs(before) == 0.0) return n1;
     agjk_vec3 n0 = v3_normalize(before);
+    double turn = v3_norm(v3_sub(n1, n0));
+    *weight = turn * 1000.0 <= CACHE_TURN_TRUST ? 1000.0
+              : turn * 10.0 >= CACHE_TURN_TRUST ? 10.0
+                                                 : CACHE_TURN_TRUST / turn;
     agjk_vec3 p = v3_normalize(v3_sub(v3_scale(n1, 2.0), n0));
     return v3_dot(p, n1) > 0.5 ? p : n1; /* a jump, not a steady turn */
+}
+
+/* The cached simplex is the last query's final one, every vertex with a
+ * positive weight; after a small motion the origin usually still projects
+ * into its interior (or, 4 points, lies inside it). Then the answer follows
+ * from one small linear system, checked with margins far above its rounding
+ * (relative weights above 1e-6 with a determinant above 1e-6 of its scale,
+ * where the rounding of a weight is below 1e-9); otherwise, and for 1 point,
+ * agjk__simplex_project_gjk decides. Returns its mask, or 0 (undecided). */
+#define INSIDE_MARGIN 1e-6
+static unsigned project_interior(const agjk_vec3 *w, int n, double lambda[4], agjk_vec3 *x) {
+    if (n == 2) {
+        agjk_vec3 e = v3_sub(w[1], w[0]);
+        double ee = v3_norm2(e), t = -v3_dot(w[0], e);
+        if (!(t > INSIDE_MARGIN * ee && ee - t > INSIDE_MARGIN * ee)) return 0;
+        lambda[1] = t / ee;
+        lambda[0] = 1.0 - lambda[1];
+        *x = v3_lerp2(w[0], lambda[0], w[1], lambda[1]);
+        return 0x3u;
+    }
+    if (n == 3) {
+        agjk_vec3 e1 = v3_sub(w[1], w[0]), e2 = v3_sub(w[2], w[0]);
+        double a11 = v3_norm2(e1), a12 = v3_dot(e1, e2), a22 = v3_norm2(e2);
+        double b1 = -v3_dot(w[0], e1), b2 = -v3_dot(w[0], e2);
+        double det = a11 * a22 - a12 * a12;
+        if (!(det > INSIDE_MARGIN * a11 * a22)) return 0;
+        double l1 = b1 * a22 - b2 * a12, l2 = a11 * b2 - a12 * b1, m = INSIDE_MARGIN * det;
+        if (!(l1 > m && l2 > m && det - l1 - l2 > m)) return 0;
+        lambda[1] = l1 / det;
+        lambda[2] = l2 / det;
+        lambda[0] = 1.0 - lambda[1] - lambda[2];
+        *x = v3_add(v3_lerp2(w[0], lambda[0], w[1], lambda[1]), v3_scale(w[2], lambda[2]));
+        return 0x7u;
+    }
+    if (n == 4) {
+        /* Weights of the origin: ratios of signed volumes. */
+        agjk_vec3 e1 = v3_sub(w[1], w[0]), e2 = v3_sub(w[2], w[0]), e3 = v3_sub(w[3], w[0]);
+        agjk_vec3 c23 = v3_cross(e2, e3);
+        double vol = v3_dot(e1, c23);
+        double scale = v3_norm(e1) * v3_norm(e2) * v3_norm(e3);
+        if (vol < 0.0) vol = -vol, scale = -scale; /* orientation: positive weights */
+        if (!(vol > INSIDE_MARGIN * (scale < 0.0 ? -scale : scale))) return 0;
+        double sg = scale < 0.0 ? -1.0 : 1.0;
+        agjk_vec3 o = v3_neg(w[0]);
+        double l1 = sg * v3_dot(o, c23);
+        double l2 = sg * v3_dot(e1, v3_cross(o, e3));
+        double l3 = sg * v3_dot(e1, v3_cross(e2, o));
+        double m = INSIDE_MARGIN * vol;
+        if (!(l1 > m && l2 > m && l3 > m && vol - l1 - l2 - l3 > m)) return 0;
+        lambda[1] = l1 / vol;
+        lambda[2] = l2 / vol;
+        lambda[3] = l3 / vol;
+        lambda[0] = 1.0 - lambda[1] - lambda[2] - lambda[3];
+        *x = v3(0.0, 0.0, 0.0);
+        return 0xFu;
+    }
+    return 0;
 }
 
 int agjk__cache_load(const agjk_cache *cache, const agjk_shape *a, const agjk_shape *b,
@@ -93,21 +172,22 @@ int agjk__cache_load(const agjk_cache *cache, const agjk_shape *a, const agjk_sh
     if (!cache || !cache_usable(cache, a, b)) return 0;
     md->hint_a = cache->hint_a;
     md->hint_b = cache->hint_b;
-    double last = v3_norm(cache->direction);
-    int simplex = (cache->flags & AGJK_CACHE_FLAT) || cache->count == 4 || !(last > 0.0);
-    if (cache->count == 0 && !(last > 0.0)) return 0;
+    int has_direction = v3_maxabs(cache->direction) > 0.0;
+    int simplex = (cache->flags & AGJK_CACHE_FLAT) || cache->count == 4 || !has_direction;
+    if (cache->count == 0 && !has_direction) return 0;
     if (!simplex || cache->count == 0 || in->method == AGJK_METHOD_FRANK_WOLFE) {
         /* A direction only (Frank-Wolfe's active set is its iterate alone). */
-        if (last > 0.0) {
-            in->x0 = v3_scale(extrapolate(cache->direction, cache->direction_prev),
-                              CACHE_DIRECTION_WEIGHT * last);
+        if (has_direction) {
+            double weight;
+            agjk_vec3 n = extrapolate(cache->direction, cache->direction_prev, &weight);
+            in->x0 = v3_scale(n, weight * v3_norm(cache->direction));
             in->x0_given = 1;
         }
         return 1;
     }
     agjk_vec3 w[4];
-    for (int i = 0; i < cache->count; ++i)
-        if (!v3_in_range(cache->point_a[i]) || !v3_in_range(cache->point_b[i])) return 0;
+    if (!in_range(cache->point_a, cache->count) || !in_range(cache->point_b, cache->count))
+        return 0;
     for (int i = 0; i < cache->count; ++i) {
         agjk__vertex *v = &in->warm[i];
         /* A's frame is A's local frame; B's points move with the relative pose. */
@@ -117,7 +197,8 @@ int agjk__cache_load(const agjk_cache *cache, const agjk_shape *a, const agjk_sh
         w[i] = v->w;
     }
     agjk_vec3 x;
-    unsigned mask = agjk__simplex_project(w, cache->count, in->warm_lambda, &x);
+    unsigned mask = project_interior(w, cache->count, in->warm_lambda, &x);
+    if (!mask) mask = agjk__simplex_project_gjk(w, cache->count, in->warm_lambda, &x);
     in->warm_mask = mask;
     in->warm_x = x;
     /* The first support goes in direction x, the projection; when the points
@@ -163,16 +244,18 @@ void agjk__cache_save(agjk_cache *cache, const agjk_shape *a, const agjk_shape *
     double dn = v3_norm(out->direction); /* solver units: in range, squares finite */
     if (dn > 0.0) cache->direction = v3_scale(out->direction, length / dn);
     int n = out->simplex_count < 0 ? 0 : out->simplex_count > 4 ? 4 : out->simplex_count;
+    /* Back to B's local frame: R^T (b - t) (rounding of a few ulps, within the
+     * tolerance warm_consistent allows, solver.c); to the caller's units by
+     * inv, a power of two (exact), skipped when 1 (the warm start's case). */
     for (int i = 0; i < n; ++i) {
-        agjk_vec3 pa = v3_scale(out->simplex[i].a, inv);
-        /* Back to B's local frame: R^T (b - t) (rounding of a few ulps, within
-         * the tolerance agjk__warm_consistent allows). */
-        agjk_vec3 pb = m3_tmul(&md->rotation[0][0],
-                               v3_sub(v3_scale(out->simplex[i].b, inv),
-                                      v3_scale(md->translation, inv)));
-        cache->point_a[i] = pa;
-        cache->point_b[i] = pb;
+        cache->point_a[i] = out->simplex[i].a;
+        cache->point_b[i] = m3_tmul(&md->rotation[0][0], v3_sub(out->simplex[i].b, md->translation));
     }
+    if (inv != 1.0)
+        for (int i = 0; i < n; ++i) {
+            cache->point_a[i] = v3_scale(cache->point_a[i], inv);
+            cache->point_b[i] = v3_scale(cache->point_b[i], inv);
+        }
     cache->count = n;
     cache->check = cache_check(cache);
 }

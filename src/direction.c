@@ -10,11 +10,16 @@
  *
  *   1. Polyak phase: heavy-ball directions (GJK++), best while the shapes are
  *      far apart relative to their size (plain GJK converges fast there and
- *      Nesterov's momentum only delays it); its first two steps are plain GJK
- *      ones when the shapes are far apart (see ADAPTIVE_PLAIN_STEPS).
+ *      Nesterov's momentum only delays it).
  *   2. Nesterov phase (Alg. 6): entered at the end of the first iteration whose
  *      best support plane is below 0.9 ||x_k|| (a relative gap of 10% or more:
  *      close or overlapping shapes, where momentum pays).
+ *      In both phases, iterations 1 and 2 take plain GJK steps while the best
+ *      plane says far apart (ADAPTIVE_PLAIN_STEPS; in the Nesterov phase only
+ *      while ||x_k|| >= 0.3 ||x_0||, ADAPTIVE_FAR_SIZE), and iteration 1 also
+ *      when s_0 lies opposite x_0 (ADAPTIVE_OPPOSITE_RATIO).
+ *      A given x_0 (a cache's or a caller's guess) starts in the Nesterov
+ *      phase.
  *   3. Plain GJK to the end: after the Alg. 6 fallback; as soon as a Nesterov
  *      support gives a worse lower bound <d_k, s_k> / ||d_k|| than the best so
  *      far (the momentum overshoots: adaptive restart in the sense of
@@ -40,14 +45,55 @@
  * support, while any mix of x_0 and x_1 lands on the same vertex again (a
  * normal cone is convex) and wastes a support. Measured (seeds 1-4, support
  * calls per query, distant boxes): 4.14 -> 3.65-3.86, the plain GJK figure;
- * 3 steps or more cost distant ellipsoids 0.3-1.3 calls. */
+ * 3 steps or more cost distant ellipsoids 0.3-1.3 calls. The test is made at
+ * each of these iterations, also after an early switch to Nesterov: a
+ * Nesterov step at iteration 2 with the best plane back above 0.9 ||x_2||
+ * lost 0.03-0.05 calls on distant boxes (a plain step at iteration 1 instead,
+ * whatever the plane, loses 0.2 there: x_0 in the momentum pays). */
+
+/* ... but only while ||x_k|| is still at least this fraction of ||x_0||: on
+ * curved shapes whose iterate has already shrunk well below the centre
+ * distance, the Nesterov step at iteration 2 pays (without this test: close
+ * ellipsoids 8.76 -> 9.37 calls, distant 7.66 -> 7.86; seeds 1-6, 0.3 keeps
+ * them within 0.06 and distant boxes 0.001-0.05 below GJK, 0.4 and 0.5 leave
+ * seed 1 at or 0.002 above it). */
+#define ADAPTIVE_FAR_SIZE 0.3
 #define ADAPTIVE_PLAIN_STEPS 2
+
+/* At iteration 1, a first support point nearly opposite x_0 (its plane below
+ * -0.9 ||x_1||: overlapping shapes, s_0 = x_1 deep along -x_0) leaves the
+ * momentum mix of x_0 and x_1 on the line of x_0, where it finds s_0 again on
+ * a polytope (a wasted support); a plain step then. Measured (seeds 1-6,
+ * overlapping boxes): 0.9 saves 0.02-0.03 calls, 0.5 and 0.7 lose on boxes and
+ * cost ellipsoids 0.03-0.1. */
+#define ADAPTIVE_OPPOSITE_RATIO 0.9
+
+/* A repeated point of A or B is looked for among the last two supports (a
+ * box's vertex often comes back two supports later): seeds 1-4, distant
+ * boxes, 0.02-0.03 calls fewer than with the last support alone; the last
+ * four gave the same counts to 0.007. */
 
 /* Weight of d_0 in the first Polyak step (Polyak: 1/2). Measured, seeds 1-4:
  * 0.3 brings close and overlapping boxes and meshes from 0.1-0.3 calls above
  * the best of GJK / Nesterov / normalised Nesterov / Polyak to at or below it,
  * at the price of 1.5 calls on close ellipsoids (still 2 below the best). */
 #define ADAPTIVE_POLYAK_FIRST 0.3
+
+/* A point's key: a mix of its coordinates' bits, so that "met again, bit for
+ * bit" is one integer comparison (this runs at every iteration). Equal points
+ * have equal keys; distinct points sharing one (a coincidence of bit
+ * patterns) would only steer the method, never the certificates. */
+#define EMPTY_KEY UINT64_MAX
+static uint64_t point_key(agjk_vec3 p) {
+    uint64_t x, y, z;
+    memcpy(&x, &p.x, sizeof x);
+    memcpy(&y, &p.y, sizeof y);
+    memcpy(&z, &p.z, sizeof z);
+    /* The three words rotated apart, so that no two coordinates' signs or
+     * exponents land on the same bits (a plain xor would give a box's
+     * vertices (h, h, c) and (-h, -h, c) one key). */
+    return x ^ ((y << 21) | (y >> 43)) ^ ((z << 42) | (z >> 22));
+}
 
 int agjk__method_has_momentum(agjk_method method) {
     return method == AGJK_METHOD_NESTEROV || method == AGJK_METHOD_NESTEROV_NORMALIZED ||
@@ -59,13 +105,22 @@ void agjk__momentum_init(agjk__momentum *m, agjk_method method, agjk_vec3 x0, in
     m->active = agjk__method_has_momentum(method);
     m->d_prev = x0;
     m->s_prev = x0;
-    m->phase = method == AGJK_METHOD_ADAPTIVE ? AGJK__PHASE_POLYAK : AGJK__PHASE_FIXED;
+    /* A given x_0 (a cache's or a caller's guess of x*) is close to the
+     * answer: Nesterov from the start, which keeps it in the momentum and
+     * restarts when it overshoots (coherent-motion benchmark, ellipsoids,
+     * support calls per query slow / fast: cache 3.0 / 2.8 -> 1.9 / 2.9 with
+     * the weights of cache.c; hint and direction 4.2 / 6.1 -> 3.3 / 4.4). */
+    if (method != AGJK_METHOD_ADAPTIVE)
+        m->phase = AGJK__PHASE_FIXED;
+    else
+        m->phase = given ? AGJK__PHASE_NESTEROV : AGJK__PHASE_POLYAK;
     m->plane = -INFINITY;
     m->plane_before = -INFINITY;
     m->omega = -INFINITY;
     m->x_k = x0;
     m->d_best = x0;
-    m->a_prev = m->b_prev = x0;
+    m->a_seen[0] = m->a_seen[1] = m->b_seen[0] = m->b_seen[1] = EMPTY_KEY;
+    m->x0_norm2 = -1.0;
     m->flat_seen = 0;
     /* A guess of x* (a cache's, a caller's) is worth keeping in the momentum:
      * plain steps would drop it at once. */
@@ -79,14 +134,16 @@ void agjk__momentum_rescale(agjk__momentum *m, double f) {
     m->plane *= f;
     m->plane_before *= f;
     m->omega *= f;
-    m->a_prev = v3_scale(m->a_prev, f);
-    m->b_prev = v3_scale(m->b_prev, f);
+    m->x0_norm2 *= f * f;
+    /* (The keys of points seen before are not rescaled: a repetition across
+     * a rescale, which is rare, goes unnoticed.) */
 }
 
 void agjk__momentum_plane(agjk__momentum *m, agjk_vec3 d, agjk_vec3 s, agjk_vec3 x) {
     double dn = v3_norm(d);
     m->omega = dn > 0.0 ? v3_dot(d, s) / dn : -INFINITY;
     m->plane_before = m->plane;
+    if (m->x0_norm2 < 0.0) m->x0_norm2 = v3_norm2(x); /* the first plane: x = x_0 */
     if (m->omega > m->plane) {
         m->plane = m->omega;
         m->d_best = d;
@@ -94,16 +151,25 @@ void agjk__momentum_plane(agjk__momentum *m, agjk_vec3 d, agjk_vec3 s, agjk_vec3
     m->x_k = x;
 }
 
-static int same_point(agjk_vec3 p, agjk_vec3 q) { return p.x == q.x && p.y == q.y && p.z == q.z; }
-
 int agjk__momentum_update(agjk__momentum *m, int k, agjk_vec3 d, const agjk__vertex *s) {
     int stopped = 0;
     /* A point of A or of B met again, bit for bit, in another direction: a
      * vertex, so a flat-faced shape, where momentum directions keep landing on
      * vertices already in the simplex (each such support is wasted) and plain
      * GJK steps land exactly on the optimal face. */
-    int flat = k > 0 && (same_point(s->a, m->a_prev) || same_point(s->b, m->b_prev));
-    if (flat) m->flat_seen = 1;
+    int flat = 0;
+    if (!m->flat_seen) {
+        /* Once seen, nothing more to learn: the adaptive method is already in
+         * its final phase, and the cache only keeps the flag. */
+        uint64_t ka = point_key(s->a), kb = point_key(s->b);
+        flat = (ka == m->a_seen[0]) | (ka == m->a_seen[1]) | (kb == m->b_seen[0]) |
+               (kb == m->b_seen[1]);
+        m->a_seen[1] = m->a_seen[0];
+        m->a_seen[0] = ka;
+        m->b_seen[1] = m->b_seen[0];
+        m->b_seen[0] = kb;
+        m->flat_seen = flat;
+    }
     if (m->method == AGJK_METHOD_ADAPTIVE && k > 0 && m->phase != AGJK__PHASE_FINAL) {
         if (!m->active) {
             m->phase = AGJK__PHASE_FINAL; /* the solver's Alg. 6 fallback */
@@ -120,8 +186,6 @@ int agjk__momentum_update(agjk__momentum *m, int k, agjk_vec3 d, const agjk__ver
     }
     m->d_prev = d;
     m->s_prev = s->w;
-    m->a_prev = s->a;
-    m->b_prev = s->b;
     return stopped;
 }
 
@@ -157,21 +221,29 @@ agjk_vec3 agjk__momentum_direction(const agjk__momentum *m, int k, agjk_vec3 x) 
         d = v3_lerp2(m->d_prev, delta, x, 1.0 - delta);
         break;
     }
-    case AGJK_METHOD_ADAPTIVE:
-        if (m->phase == AGJK__PHASE_POLYAK) {
-            if (k <= m->plain_steps && m->plane >= ADAPTIVE_CLOSE_RATIO * v3_norm(x)) {
-                d = x; /* far apart: plain GJK steps first */
-            } else {
-                /* As AGJK_METHOD_POLYAK, with a lighter first momentum step. */
-                double delta = k == 1 ? ADAPTIVE_POLYAK_FIRST : 1.0 / (kk + 1.0);
-                d = v3_lerp2(m->d_prev, delta, x, 1.0 - delta);
-            }
+    case AGJK_METHOD_ADAPTIVE: {
+        int plain = 0;
+        if (k <= m->plain_steps) {
+            /* Far apart, or s_0 opposite x_0: plain GJK steps first. */
+            double xn = v3_norm(x);
+            int far = m->plane >= ADAPTIVE_CLOSE_RATIO * xn &&
+                      (m->phase == AGJK__PHASE_POLYAK ||
+                       xn * xn >= ADAPTIVE_FAR_SIZE * ADAPTIVE_FAR_SIZE * m->x0_norm2);
+            plain = far || (k == 1 && m->plane <= -ADAPTIVE_OPPOSITE_RATIO * xn);
+        }
+        if (plain) {
+            d = x;
+        } else if (m->phase == AGJK__PHASE_POLYAK) {
+            /* As AGJK_METHOD_POLYAK, with a lighter first momentum step. */
+            double delta = k == 1 ? ADAPTIVE_POLYAK_FIRST : 1.0 / (kk + 1.0);
+            d = v3_lerp2(m->d_prev, delta, x, 1.0 - delta);
         } else {
             double delta = (kk + 1.0) / (kk + 3.0); /* as AGJK_METHOD_NESTEROV */
             agjk_vec3 y = v3_lerp2(x, delta, m->s_prev, 1.0 - delta);
             d = v3_lerp2(m->d_prev, delta, y, 1.0 - delta);
         }
         break;
+    }
     default:
         d = x;
         break;

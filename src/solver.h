@@ -20,7 +20,9 @@ typedef struct agjk__momentum {
     double omega;     /* <d, s> / ||d|| of the last support */
     agjk_vec3 x_k;    /* iterate at which the last support was asked */
     agjk_vec3 d_best; /* direction of the best plane */
-    agjk_vec3 a_prev, b_prev; /* points of A and B of the last support */
+    uint64_t a_seen[2], b_seen[2]; /* keys of the points of A and B of the last two
+                                      supports (direction.c) */
+    double x0_norm2;  /* ||x_0||^2, solver units (-1 before the first support) */
     int flat_seen;    /* a point of A or B came back bit for bit (any method) */
     int plain_steps;  /* adaptive: iterations that may take plain steps when far */
 } agjk__momentum;

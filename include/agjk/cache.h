@@ -71,7 +71,8 @@ typedef struct agjk_cache {
      *  the plane that certified the answer) in A's local frame, length units,
      *  and the one of the query before (zero if none). */
     agjk_vec3 direction, direction_prev;
-    /** Check value of the fields above, written by every cached query: a
+    /** Check value of the fields above but the pair's pointers (those are
+     *  compared with the query's shapes), written by every cached query: a
      *  cache whose content does not match it (garbage, or edited by hand) is
      *  ignored. */
     uint64_t check;

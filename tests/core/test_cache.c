@@ -335,6 +335,44 @@ START_TEST(enclosed) {
 }
 END_TEST
 
+/* A cached tetrahedron (or face) that stops holding the origin by a hair:
+ * B slides out of a shallow overlap in steps down to 1e-9 of the size, each
+ * query warm-started from the one before, and every answer is judged. The
+ * cache's interior test (cache.c) must hand the cases near its margins to
+ * the exact projection, never claim an enclosure that is not there. */
+START_TEST(leaving_the_cached_simplex) {
+    tu_rng rng;
+    tu_rng_seed(&rng, 77);
+    int enclosed_then_not = 0;
+    for (int kind = 0; kind < 3; kind++)
+        for (int trial = 0; trial < 10; trial++) {
+            pair p;
+            int tries = 0;
+            while (make_pair(&rng, kind, &p) != 0) TU_CHECK(++tries < 100);
+            agjk_cache cache;
+            agjk_cache_init(&cache);
+            agjk_pose pb0 = p.pb;
+            int was_enclosed = 0;
+            for (int i = 0; i < 40; i++) {
+                /* Overlap depth from 1e-2 to 1e-9 of the size, then the same apart. */
+                double e = 1e-2 * pow(1e-7, (i % 20) / 19.0) * (i < 20 ? -1.0 : 1.0);
+                agjk_pose pb = pb0;
+                agjk_result cold, warm;
+                char what[96];
+                if (tu_set_distance(&p.ra, &p.pa, &p.rb, &pb, e * p.size, NULL) != 0) continue;
+                agjk_distance(&p.a, &p.pa, &p.b, &pb, NULL, &cold);
+                agjk_distance_cached(&p.a, &p.pa, &p.b, &pb, NULL, &cache, &warm);
+                snprintf(what, sizeof what, "kind %d trial %d step %d (offset %.3g)", kind,
+                         trial, i, e);
+                check_answer(what, &p, &p.pa, &pb, &cold, &warm, 0, 0);
+                if (warm.status == AGJK_STATUS_INTERSECTING) was_enclosed = 1;
+                else if (was_enclosed) ++enclosed_then_not, was_enclosed = 0;
+            }
+        }
+    TU_ENSURE(enclosed_then_not >= 10, "only %d runs left an overlap", enclosed_then_not);
+}
+END_TEST
+
 static void lying_support(const void *data, const agjk_vec3 *d, agjk_vec3 *out, int *hint) {
     (void)data;
     (void)d;
@@ -384,6 +422,7 @@ int main(void) {
     TU_ADD(s, foreign_and_garbage);
     TU_ADD(s, stale);
     TU_ADD(s, enclosed);
+    TU_ADD(s, leaving_the_cached_simplex);
     TU_ADD(s, invalid_input_empties);
     return tu_run_suite(s);
 }

@@ -53,7 +53,9 @@ extern const double wp_tolerances[WP_TOL_COUNT];
 int bench_write_reports(const bench_report *r);
 
 /* Support calls per distance query, mean, per family and category: the four
- * methods of the paper, their best, and the adaptive method (calls.c). */
-void bench_table_support_calls(FILE *f, const bench_report *r);
+ * methods of the paper, their best, Coal's best (coal: NULL when Coal did not
+ * run) and the adaptive method (calls.c). */
+struct coal_bench_data;
+void bench_table_support_calls(FILE *f, const bench_report *r, const struct coal_bench_data *coal);
 
 #endif

@@ -420,19 +420,19 @@ int main(int argc, char **argv) {
     rep.seconds[4] = (bench_now_ns() - t_all) * 1e-9;
     if (bench_write_reports(&rep) != 0) return 2;
     if (coal_bench_write(&rep, coal) != 0) return 2;
-    coal_bench_free(coal);
     {
-        /* The adaptive method against the paper's four (calls.c). */
+        /* The adaptive method against the paper's four and Coal (calls.c). */
         char path[1024];
         FILE *md;
         snprintf(path, sizeof path, "%s/tables.md", cfg.out_dir);
         md = fopen(path, "a");
         if (md) {
-            bench_table_support_calls(md, &rep);
+            bench_table_support_calls(md, &rep, coal);
             fclose(md);
         }
-        bench_table_support_calls(stderr, &rep);
+        bench_table_support_calls(stderr, &rep, coal);
     }
+    coal_bench_free(coal);
     if (cfg.coherent_pairs > 0 && cfg.coherent_steps > 0 && cfg.coherent_reps > 0) {
         fprintf(stderr, "agjk-bench: coherent motion (%d pairs x %d steps, R = %d)\n",
                 cfg.coherent_pairs, cfg.coherent_steps, cfg.coherent_reps);
