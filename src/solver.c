@@ -480,26 +480,20 @@ static int plane_stops(const solver *sv, agjk__solve_output *out) {
 }
 
 /* Warm start: puts in->warm (projected by agjk__cache_load, cache.c) into
- * simplex[] as the active set with its weights and projection *x. Returns the
- * number of vertices kept; 4 when they enclose the origin (*x = 0). */
-static int warm_seed(const agjk__solve_input *in, agjk__vertex simplex[4], double lambda[4],
-                     agjk_vec3 *x) {
-    /* Projected by agjk__cache_load already: keep the support set. */
-    *x = in->warm_x;
-    if (in->warm_mask == 0xFu) {
-        for (int i = 0; i < 4; ++i) {
-            simplex[i] = in->warm[i];
-            lambda[i] = in->warm_lambda[i];
-        }
-        return 4;
-    }
+ * the solver as its active set, with its weights and projection x, in one
+ * copy. Returns the number of vertices kept; 4 when they enclose the origin
+ * (x = 0). */
+static int warm_seed(const agjk__solve_input *in, solver *sv) {
+    /* Projected by agjk__cache_load already: keep the support set, in order. */
+    sv->x = in->warm_x;
     int kept = 0;
     for (int i = 0; i < in->warm_count; ++i) {
-        if (in->warm_mask & (1u << i)) {
-            simplex[kept] = in->warm[i];
-            lambda[kept] = in->warm_lambda[i];
-            ++kept;
-        }
+        if (!(in->warm_mask & (1u << i))) continue;
+        sv->w[kept] = in->warm[i].w;
+        sv->a[kept] = in->warm[i].a;
+        sv->b[kept] = in->warm[i].b;
+        sv->lambda[kept] = in->warm_lambda[i];
+        ++kept;
     }
     return kept;
 }
@@ -597,13 +591,7 @@ void agjk__solve(agjk__minkowski *md, const agjk__solve_input *in, agjk__solve_o
      * directions take it from there (cache.c). Only for problems of ordinary
      * size, where x_0, its projection, is used as given. */
     if (in->warm_count > 0 && sv.x.x == in->x0.x && sv.x.y == in->x0.y && sv.x.z == in->x0.z) {
-        agjk__vertex seed[4];
-        sv.count = warm_seed(in, seed, sv.lambda, &sv.x);
-        for (int i = 0; i < sv.count; ++i) {
-            sv.w[i] = seed[i].w;
-            sv.a[i] = seed[i].a;
-            sv.b[i] = seed[i].b;
-        }
+        sv.count = warm_seed(in, &sv);
         sv.x2 = v3_norm2(sv.x);
         have_x = 1;
         warm = 1;
