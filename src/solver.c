@@ -58,7 +58,13 @@ static AGJK__NOINLINE AGJK__COLD void follow_rescale(solver *sv, agjk_vec3 *d) {
     }
     sv->x = v3_scale(sv->x, f);
     sv->x2 = v3_norm2(sv->x);
-    *d = v3_scale(*d, f);
+    /* The direction the support just used: scaled with the rest, unless that
+     * would push it below DIRECTION_MIN, where it would start to lose bits
+     * (a shrink by 2^-600 once left a denormal d whose direction, off by
+     * 1e-3, certified a separation the support never saw); its length only
+     * weights the momentum, so then it goes to unit size instead (exact). */
+    double dm = v3_maxabs(*d);
+    if (dm > 0.0) *d = dm * f >= AGJK__DIRECTION_MIN ? v3_scale(*d, f) : v3_scale_to_unit(*d, dm);
     agjk__momentum_rescale(&sv->m, f);
     if (!sv->in->relative) sv->abs_tolerance *= f * f;
 }
