@@ -96,9 +96,11 @@ void agjk__core_bounds_of(const agjk__solve_output *out, agjk__core_bounds *b) {
     /* ||x*|| <= ||p|| for p in D: the active set's own point, which x equals to
      * the rounding unless the projection was ill-conditioned. The plane bound
      * above holds whatever x is. */
-    double member = v3_norm(out->x_member);
-    b->inexact = member > core + rounding;
-    b->upper = (b->inexact ? member : core) + rounding;
+    /* Within one noise of ||x|| (the usual case, decided in squares), ||x|| +
+     * 2 noise covers the member point and its own rounding. */
+    double reach = core + out->noise, member2 = v3_norm2(out->x_member);
+    b->inexact = member2 > reach * reach;
+    b->upper = (b->inexact ? sqrt(member2) : core) + rounding;
     /* From A towards B; v3_normalize copes with a denormal x (zero stays zero). */
     b->toward_x = v3_normalize(v3_neg(out->x));
     /* The plane that certified the lower bound: -x, or the support direction

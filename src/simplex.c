@@ -32,13 +32,16 @@ static void set_vertex(int i, int n, double lambda[4], agjk_vec3 p, agjk_vec3 *p
     *point = p;
 }
 
-/* The foot p of the origin on a segment along e is orthogonal to e, but the
- * computed one is off along e by a few ulps of the segment's ends: nothing
- * when they are near the origin, everything for a needle (ends 1e9 away, foot
- * 1e-2 away), whose next support direction would then tilt along the needle
- * and fetch the same end again (GJK stalls). Removing p's component along e
- * leaves an error of a few ulps of |p| itself. */
-static inline agjk_vec3 segment_cleanup(agjk_vec3 p, agjk_vec3 e, double ee) {
+/* The foot p of the origin on a segment along e, measured from its end b,
+ * is orthogonal to e, but the computed one is off along e by a few ulps of b:
+ * nothing when b is near the origin, everything for a needle (b 1e9 away, the
+ * foot 1e-2 away), whose next support direction would then tilt along the
+ * needle and fetch the same end again (GJK stalls). So when |b| exceeds |p|
+ * a million times, p's component along e is removed, leaving an error of a
+ * few ulps of |p| itself; otherwise (the usual case, a predicted branch) p
+ * stays as computed. */
+static inline agjk_vec3 segment_cleanup(agjk_vec3 p, agjk_vec3 b, agjk_vec3 e, double ee) {
+    if (!(v3_norm2(b) > 0x1p40 * v3_norm2(p))) return p;
     return v3_sub(p, v3_scale(e, v3_dot(p, e) / ee));
 }
 
@@ -72,7 +75,7 @@ static unsigned project_segment(const agjk_vec3 *p, int n, int i, int j, double 
     for (int k = 0; k < n; ++k) lambda[k] = 0.0;
     lambda[i] = 1.0 - t;
     lambda[j] = t;
-    *point = segment_cleanup(v3_lerp2(a, 1.0 - t, b, t), e, ee);
+    *point = segment_cleanup(v3_lerp2(a, 1.0 - t, b, t), a, e, ee);
     return (1u << i) | (1u << j);
 }
 
@@ -363,7 +366,7 @@ static inline int segment_foot(const agjk_vec3 *w, int ia, int ib, agjk_vec3 u, 
                                double *wa, double *wb, agjk_vec3 *p) {
     agjk_vec3 b = w[ib];
     double s = v3_dot(b, u) / uu; /* p = b + s (a - b) */
-    *p = segment_cleanup(v3_lerp2(b, 1.0 - s, w[ia], s), u, uu);
+    *p = segment_cleanup(v3_lerp2(b, 1.0 - s, w[ia], s), b, u, uu);
     *wa = s;
     *wb = 1.0 - s;
     return s > 0.0 && s < 1.0; /* also false for uu = 0 */

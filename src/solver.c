@@ -366,8 +366,12 @@ static AGJK__NOINLINE AGJK__COLD agjk_vec3 nearest_edge_point(const solver *sv, 
 static agjk_vec3 member_point(const solver *sv) {
     agjk_vec3 p = v3(0.0, 0.0, 0.0);
     for (int i = 0; i < sv->count; ++i) p = v3_add(p, v3_scale(sv->w[i], sv->lambda[i]));
-    double reach = sqrt(sv->x2) + 2.0 * sv->md->noise;
-    return v3_norm2(p) <= reach * reach ? p : nearest_edge_point(sv, p);
+    /* p is a member either way; the edges are searched only when p is longer
+     * than x by more than about the rounding: (||x|| + 2 noise)^2 bounded
+     * with ||x|| <= sqrt(3) max |x_i| (no square root at the end of every
+     * query). */
+    double n = sv->md->noise, reach2 = sv->x2 + 4.0 * n * (1.7320508075688772 * v3_maxabs(sv->x) + n);
+    return v3_norm2(p) <= reach2 ? p : nearest_edge_point(sv, p);
 }
 
 /* Adds s to the active set and projects the origin onto its hull, keeping only
