@@ -256,20 +256,21 @@ static AGJK__COLD int deep_inside(const agjk_vec3 *p, int n, double noise, agjk_
     return planes > 0;
 }
 
-/* Points certify_overlap may hold: the simplex and up to 4 more supports. */
+/* Points certify_overlap may hold: the simplex (2-4 points) and the supports
+ * it adds, up to 6. */
 #define CERTIFY_POINTS 8
 
 /* The origin in the active set, or within rounding of it, but not certified
  * by it: x = 0 on a segment or a triangle (boxes aligned with each other
  * often end so), ||x|| <= noise, or a tetrahedron with the origin near a
- * face. More supports, beyond the simplex
- * where the origin is shallow (across a segment, on both sides of a triangle,
- * beyond a tetrahedron's shallow faces, then beyond any plane the test finds
- * shallow), until the test passes, a support shows D itself is shallow there
- * (the origin is near its boundary: touching to rounding), or there is room
- * for no more points. Rare, so out of line; at most CERTIFY_POINTS - 1
- * supports. Returns 1 when certified (0 also after a bad support or a
- * rescale: the caller then answers what it has). */
+ * face. More supports, beyond the simplex where the origin is shallow
+ * (across a segment, on both sides of a triangle, beyond a tetrahedron's
+ * shallow faces, then beyond any plane the test finds shallow), until the
+ * test passes, a support shows D itself is shallow there (the origin is near
+ * its boundary: touching to rounding), or there is room for no more points.
+ * Rare, so out of line; at most CERTIFY_POINTS - 2 supports. Returns 1 when
+ * certified (0 also after a bad support or a rescale: the caller then answers
+ * what it has). */
 static AGJK__NOINLINE AGJK__COLD int certify_overlap(solver *sv, agjk__solve_output *out) {
     agjk_vec3 p[CERTIFY_POINTS], dirs[4];
     int n = sv->count, nd = 0;
