@@ -195,10 +195,11 @@ static int beyond_rounding(double h, agjk_vec3 e1, agjk_vec3 e2, double noise) {
  * For a face (p, q, r), h = <-p, (q - p) x (r - p)> = -det(p, q, r). The
  * faces are listed with one orientation, so the four h add up to the
  * tetrahedron's signed volume (times 6) and its sign turns them all inwards.
- * A coarse bound first (|k|^2 <= 2 |e1|^2 |e2|^2 <= 2 (4 max |w_i|^2)^2,
- * and the determinant's own rounding, a few eps |w|^3 <= noise |w|^2, well
- * inside it) settles the usual case (a problem near the origin, tiny noise)
- * with no face normal at all. */
+ * A coarse bound first settles the usual case (a problem near the origin,
+ * tiny noise) with no face normal at all: |k|^2 <= 2 |e1|^2 |e2|^2 <=
+ * 2 (4 max |w_i|^2)^2, so h > sqrt(2) 3 noise 4 max |w_i|^2 would do, and a
+ * factor 5 instead of 4 also covers the determinant's own rounding (a few
+ * eps |w|^3, at most about 1.3 noise max |w_i|^2). */
 static unsigned shallow_faces(const agjk_vec3 w[4], double noise) {
     static const int face[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
     double h[4], big = 0.0;
@@ -208,7 +209,7 @@ static unsigned shallow_faces(const agjk_vec3 w[4], double noise) {
         if (ww > big) big = ww;
     }
     double sign = h[0] + h[1] + h[2] + h[3] < 0.0 ? -1.0 : 1.0;
-    double coarse = DEPTH_FACTOR * noise * 4.0 * big;
+    double coarse = DEPTH_FACTOR * noise * 5.0 * big;
     coarse = 2.0 * coarse * coarse;
     unsigned shallow = 0;
     for (int f = 0; f < 4; ++f) {
