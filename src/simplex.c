@@ -45,13 +45,6 @@ static inline agjk_vec3 segment_cleanup(agjk_vec3 p, agjk_vec3 b, agjk_vec3 e, d
     return v3_sub(p, v3_scale(e, v3_dot(p, e) / ee));
 }
 
-/* |u| x |v| with absolute values: bounds the rounding of u x v, component by
- * component. */
-static agjk_vec3 abs_cross(agjk_vec3 u, agjk_vec3 v) {
-    return v3(fabs(u.y * v.z) + fabs(u.z * v.y), fabs(u.z * v.x) + fabs(u.x * v.z),
-              fabs(u.x * v.y) + fabs(u.y * v.x));
-}
-
 /* Segment p[i]-p[j] inside an n-point simplex. */
 static unsigned project_segment(const agjk_vec3 *p, int n, int i, int j, double lambda[4],
                                 agjk_vec3 *point) {
@@ -119,15 +112,15 @@ static AGJK__COLD unsigned project_triangle(const agjk_vec3 *p, int n, int i, in
     double scale;
     if (lbc >= lab && lbc >= lca) {
         nrm = v3_cross(ab, v3_neg(ca));
-        bound = abs_cross(ab, ca);
+        bound = v3_abs_cross(ab, ca);
         scale = lab * lca;
     } else if (lca >= lab) {
         nrm = v3_cross(bc, v3_neg(ab));
-        bound = abs_cross(bc, ab);
+        bound = v3_abs_cross(bc, ab);
         scale = lbc * lab;
     } else {
         nrm = v3_cross(ca, v3_neg(bc));
-        bound = abs_cross(ca, bc);
+        bound = v3_abs_cross(ca, bc);
         scale = lca * lbc;
     }
     double nn = v3_norm2(nrm);

@@ -182,11 +182,14 @@ static int momentum_stalls(const solver *sv, double g, int k) {
 
 /* h^2 > (DEPTH_FACTOR noise |k|)^2 with h > 0, k as above. */
 static int beyond_rounding(double h, agjk_vec3 e1, agjk_vec3 e2, double noise) {
-    agjk_vec3 k = v3(fabs(e1.y * e2.z) + fabs(e1.z * e2.y), fabs(e1.z * e2.x) + fabs(e1.x * e2.z),
-                     fabs(e1.x * e2.y) + fabs(e1.y * e2.x));
+    agjk_vec3 k = v3_abs_cross(e1, e2);
     double limit = DEPTH_FACTOR * noise;
     return h > 0.0 && h * h > limit * limit * v3_norm2(k);
 }
+
+/* The faces of a tetrahedron w[0..3], face f without w[f], all listed with
+ * one orientation (their normals all point inwards or all outwards). */
+static const int tetra_faces[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
 
 /* The tetrahedron w[0..3] (the common end of an overlapping query): the
  * origin beyond each face plane by the margin above. Returns the mask of the
@@ -201,10 +204,9 @@ static int beyond_rounding(double h, agjk_vec3 e1, agjk_vec3 e2, double noise) {
  * factor 5 instead of 4 also covers the determinant's own rounding (a few
  * eps |w|^3, at most about 1.3 noise max |w_i|^2). */
 static unsigned shallow_faces(const agjk_vec3 w[4], double noise) {
-    static const int face[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
     double h[4], big = 0.0;
     for (int f = 0; f < 4; ++f) {
-        h[f] = -v3_dot(w[face[f][0]], v3_cross(w[face[f][1]], w[face[f][2]]));
+        h[f] = -v3_dot(w[tetra_faces[f][0]], v3_cross(w[tetra_faces[f][1]], w[tetra_faces[f][2]]));
         double ww = v3_norm2(w[f]);
         if (ww > big) big = ww;
     }
@@ -217,8 +219,8 @@ static unsigned shallow_faces(const agjk_vec3 w[4], double noise) {
         if (hf > 0.0 && hf * hf > coarse) continue;
         /* Near the bound: h again from the edges, whose rounding the precise
          * test charges (the determinant's grows with |p| |q| |r|). */
-        agjk_vec3 p = w[face[f][0]];
-        agjk_vec3 e1 = v3_sub(w[face[f][1]], p), e2 = v3_sub(w[face[f][2]], p);
+        agjk_vec3 p = w[tetra_faces[f][0]];
+        agjk_vec3 e1 = v3_sub(w[tetra_faces[f][1]], p), e2 = v3_sub(w[tetra_faces[f][2]], p);
         hf = -sign * v3_dot(p, v3_cross(e1, e2));
         if (!beyond_rounding(hf, e1, e2, noise)) shallow |= 1u << f;
     }
@@ -294,12 +296,11 @@ static AGJK__NOINLINE AGJK__COLD int certify_overlap(solver *sv, agjk__solve_out
         dirs[nd++] = v3_neg(c);
     } else if (n == 4) {
         /* Beyond each shallow face: its outward normal. */
-        static const int face[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
-        unsigned shallow = shallow_faces(p, noise);
+            unsigned shallow = shallow_faces(p, noise);
         for (int f = 0; f < 4; ++f) {
             if (!(shallow & (1u << f))) continue;
-            agjk_vec3 q = p[face[f][0]];
-            agjk_vec3 c = v3_cross(v3_sub(p[face[f][1]], q), v3_sub(p[face[f][2]], q));
+            agjk_vec3 q = p[tetra_faces[f][0]];
+            agjk_vec3 c = v3_cross(v3_sub(p[tetra_faces[f][1]], q), v3_sub(p[tetra_faces[f][2]], q));
             dirs[nd++] = v3_dot(c, v3_sub(p[f], q)) > 0.0 ? v3_neg(c) : c;
         }
     } else {
@@ -353,10 +354,9 @@ static AGJK__NOINLINE AGJK__COLD agjk_vec3 nearest_edge_point(const solver *sv, 
     double pp = v3_norm2(p);
     for (int i = 0; i < sv->count; ++i)
         for (int j = i + 1; j < sv->count; ++j) {
-            agjk_vec3 a = sv->w[i], u = v3_sub(sv->w[j], a);
-            double uu = v3_norm2(u), t = uu > 0.0 ? -v3_dot(a, u) / uu : 0.0;
-            t = t < 0.0 ? 0.0 : t > 1.0 ? 1.0 : t;
-            agjk_vec3 q = v3_lerp2(a, 1.0 - t, sv->w[j], t);
+            agjk_vec3 edge[2] = {sv->w[i], sv->w[j]}, q;
+            double l[4];
+            agjk__simplex_project(edge, 2, l, &q);
             if (v3_norm2(q) < pp) {
                 p = q;
                 pp = v3_norm2(q);

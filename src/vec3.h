@@ -40,6 +40,12 @@ static inline double v3_norm(agjk_vec3 a) { return sqrt(v3_dot(a, a)); }
 static inline agjk_vec3 v3_cross(agjk_vec3 a, agjk_vec3 b) {
     return v3(a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x);
 }
+/* |a| x |b| with absolute values: bounds the rounding of a x b, component by
+ * component (a few eps times it). */
+static inline agjk_vec3 v3_abs_cross(agjk_vec3 a, agjk_vec3 b) {
+    return v3(fabs(a.y * b.z) + fabs(a.z * b.y), fabs(a.z * b.x) + fabs(a.x * b.z),
+              fabs(a.x * b.y) + fabs(a.y * b.x));
+}
 /* a * s + b * t */
 static inline agjk_vec3 v3_lerp2(agjk_vec3 a, double s, agjk_vec3 b, double t) {
     return v3(a.x * s + b.x * t, a.y * s + b.y * t, a.z * s + b.z * t);
