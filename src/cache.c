@@ -267,22 +267,28 @@ static void cache_reset(agjk_cache *cache) { agjk_cache_init(cache); }
 
 static const agjk__warm_hooks cache_hooks = {agjk__cache_load, agjk__cache_save, cache_reset};
 
+/* Either cached query; an invalid input leaves the cache cleared, as a
+ * stale cache must not outlive a query that could not use it. */
+static agjk_status cached_query(const agjk_shape *a, const agjk_pose *pose_a,
+                                const agjk_shape *b, const agjk_pose *pose_b,
+                                const agjk_options *options, agjk_cache *cache,
+                                agjk_result *result, int boolean_mode) {
+    agjk_status status = agjk__query_run(a, pose_a, b, pose_b, options, result, boolean_mode,
+                                         cache, &cache_hooks);
+    if (status == AGJK_STATUS_INVALID_INPUT && cache) agjk_cache_init(cache);
+    return status;
+}
+
 agjk_status agjk_distance_cached(const agjk_shape *a, const agjk_pose *pose_a,
                                  const agjk_shape *b, const agjk_pose *pose_b,
                                  const agjk_options *options, agjk_cache *cache,
                                  agjk_result *result) {
-    agjk_status status =
-        agjk__query_run(a, pose_a, b, pose_b, options, result, 0, cache, &cache_hooks);
-    if (status == AGJK_STATUS_INVALID_INPUT && cache) agjk_cache_init(cache);
-    return status;
+    return cached_query(a, pose_a, b, pose_b, options, cache, result, 0);
 }
 
 agjk_status agjk_collide_cached(const agjk_shape *a, const agjk_pose *pose_a,
                                 const agjk_shape *b, const agjk_pose *pose_b,
                                 const agjk_options *options, agjk_cache *cache,
                                 agjk_result *result) {
-    agjk_status status =
-        agjk__query_run(a, pose_a, b, pose_b, options, result, 1, cache, &cache_hooks);
-    if (status == AGJK_STATUS_INVALID_INPUT && cache) agjk_cache_init(cache);
-    return status;
+    return cached_query(a, pose_a, b, pose_b, options, cache, result, 1);
 }
