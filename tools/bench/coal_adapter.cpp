@@ -172,29 +172,28 @@ extern "C" int coal_adapter_run(const void *shape_a, const void *shape_b,
                                 const coal_query_desc *q, coal_answer *out) {
     Query *query = static_cast<Query *>(coal_adapter_query_new(shape_a, shape_b, q));
     if (!query) return -1;
-    try {
-        const int reps = q->reps > 0 ? q->reps : 1;
-        std::vector<double> times((size_t)reps);
-        GJK::Status status = GJK::DidNotRun;
-        for (int r = 0; r < reps; ++r) {
-            const double t0 = q->now_ns();
-            status = query->run();
-            times[(size_t)r] = q->now_ns() - t0;
-            sink = query->gjk.distance;
-        }
-        out->coal_status = (int)status;
-        out->iterations = (int)query->gjk.getNumIterations();
-        out->verdict = verdict_of(status);
-        out->distance = out->verdict == 1 ? 0.0 : query->gjk.distance;
-        out->time_ns = q->reps > 0 ? q->trimmed_mean(times.data(), reps) : 0.0;
-        out->support_calls = (int)query->count_support_calls();
-        delete query;
-        return 0;
-    } catch (const std::exception &e) {
-        std::fprintf(stderr, "agjk-bench: Coal threw: %s\n", e.what());
-        delete query;
-        return -1;
-    }
+    const int rc = guarded(
+        [&] {
+            const int reps = q->reps > 0 ? q->reps : 1;
+            std::vector<double> times((size_t)reps);
+            GJK::Status status = GJK::DidNotRun;
+            for (int r = 0; r < reps; ++r) {
+                const double t0 = q->now_ns();
+                status = query->run();
+                times[(size_t)r] = q->now_ns() - t0;
+                sink = query->gjk.distance;
+            }
+            out->coal_status = (int)status;
+            out->iterations = (int)query->gjk.getNumIterations();
+            out->verdict = verdict_of(status);
+            out->distance = out->verdict == 1 ? 0.0 : query->gjk.distance;
+            out->time_ns = q->reps > 0 ? q->trimmed_mean(times.data(), reps) : 0.0;
+            out->support_calls = (int)query->count_support_calls();
+            return 0;
+        },
+        -1);
+    delete query;
+    return rc;
 }
 
 namespace {
@@ -276,22 +275,21 @@ extern "C" int coal_adapter_depth(const void *shape_a, const void *shape_b,
     DepthQuery *query =
         static_cast<DepthQuery *>(coal_adapter_depth_query_new(shape_a, shape_b, q));
     if (!query) return -1;
-    try {
-        const int reps = q->reps > 0 ? q->reps : 1;
-        std::vector<double> times((size_t)reps);
-        for (int r = 0; r < reps; ++r) {
-            const double t0 = q->now_ns();
-            query->run();
-            times[(size_t)r] = q->now_ns() - t0;
-            sink = query->epa.depth;
-        }
-        query->answer(out);
-        out->time_ns = q->reps > 0 ? q->trimmed_mean(times.data(), reps) : 0.0;
-        delete query;
-        return 0;
-    } catch (const std::exception &e) {
-        std::fprintf(stderr, "agjk-bench: Coal threw: %s\n", e.what());
-        delete query;
-        return -1;
-    }
+    const int rc = guarded(
+        [&] {
+            const int reps = q->reps > 0 ? q->reps : 1;
+            std::vector<double> times((size_t)reps);
+            for (int r = 0; r < reps; ++r) {
+                const double t0 = q->now_ns();
+                query->run();
+                times[(size_t)r] = q->now_ns() - t0;
+                sink = query->epa.depth;
+            }
+            query->answer(out);
+            out->time_ns = q->reps > 0 ? q->trimmed_mean(times.data(), reps) : 0.0;
+            return 0;
+        },
+        -1);
+    delete query;
+    return rc;
 }
