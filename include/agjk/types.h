@@ -57,7 +57,10 @@ typedef enum agjk_status {
     AGJK_STATUS_INTERSECTING = 1,
     /** The tolerance was reached but neither separation nor intersection could be
      *  certified: the true distance lies in [0, distance] with distance <= bound.
-     *  The shapes touch to within the tolerance. */
+     *  The shapes touch to within the tolerance. Queries go on past the
+     *  tolerance (up to 32 more iterations, never past max_iterations) to decide
+     *  the sign, so this answer is kept for shapes within rounding of contact,
+     *  or so close that those iterations could not tell. */
     AGJK_STATUS_CONTACT_WITHIN_TOLERANCE = 2,
     /** The iteration cap was hit, floating point stopped making progress
      *  before the tolerance (or, in absolute mode, the floating-point floor) was
