@@ -51,11 +51,17 @@ void agjk__minkowski_init(agjk__minkowski *md, const agjk_shape *a, const agjk_p
     md->bad_support = 0;
     md->scale = 1.0;
     md->rescaled = 1.0;
-    /* R = R_A^T R_B: entry (i, j) is <column i of R_A, column j of R_B>. */
+    /* R = R_A^T R_B: row i is sum_k R_A[k][i] (row k of R_B), three rows of
+     * R_B scaled and added (written out as vectors: the loop over i, j was
+     * not unrolled, and its index arithmetic cost as much as the products). */
     const double *ra = &pose_a->rotation[0][0], *rb = &pose_b->rotation[0][0];
-    for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j)
-            md->rotation[i][j] = ra[i] * rb[j] + ra[3 + i] * rb[3 + j] + ra[6 + i] * rb[6 + j];
+    agjk_vec3 b0 = v3(rb[0], rb[1], rb[2]), b1 = v3(rb[3], rb[4], rb[5]), b2 = v3(rb[6], rb[7], rb[8]);
+    for (int i = 0; i < 3; ++i) {
+        agjk_vec3 row = v3_add(v3_lerp2(b0, ra[i], b1, ra[3 + i]), v3_scale(b2, ra[6 + i]));
+        md->rotation[i][0] = row.x;
+        md->rotation[i][1] = row.y;
+        md->rotation[i][2] = row.z;
+    }
     md->translation = m3_tmul(ra, v3_sub(pose_b->translation, pose_a->translation));
     md->translation_size = v3_maxabs(md->translation);
     agjk__minkowski_grow(md, 0.0);
