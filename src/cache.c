@@ -44,8 +44,11 @@ void agjk_cache_init_sized(agjk_cache *cache, size_t struct_size) {
  * deliberate forger, who could as well corrupt the shapes): FNV-1a steps over
  * 64-bit words in three independent lanes, one per coordinate, so that the
  * multiplications overlap (one chain of them was a tenth of a warm query's
- * time on boxes). The pair's pointers are left out: they are compared with
- * the query's own. count must be in 0..4. */
+ * time on boxes). Every step is a bijection of its lane, so an edit of any
+ * one word always changes the value. The pair's pointers are left out: they
+ * are compared with the query's own. The words go in a fixed order (header,
+ * the count points of A and B, the two directions), mixed in by load and
+ * save within the loops that read or write the points anyway. */
 #define CHECK_PRIME 0x100000001b3u
 
 static uint64_t bits(double v) {
@@ -54,45 +57,46 @@ static uint64_t bits(double v) {
     return w;
 }
 
-static void mix_vec(uint64_t h[3], agjk_vec3 v) {
-    h[0] = (h[0] ^ bits(v.x)) * CHECK_PRIME;
-    h[1] = (h[1] ^ bits(v.y)) * CHECK_PRIME;
-    h[2] = (h[2] ^ bits(v.z)) * CHECK_PRIME;
+/* The three lanes, a value (kept in registers through the loops). */
+typedef struct check_lanes {
+    uint64_t x, y, z;
+} check_lanes;
+
+static inline check_lanes mix_vec(check_lanes h, agjk_vec3 v) {
+    h.x = (h.x ^ bits(v.x)) * CHECK_PRIME;
+    h.y = (h.y ^ bits(v.y)) * CHECK_PRIME;
+    h.z = (h.z ^ bits(v.z)) * CHECK_PRIME;
+    return h;
 }
 
-static uint64_t cache_check(const agjk_cache *c) {
-    uint64_t h[3] = {0xcbf29ce484222325u, 0x84222325cbf29ce4u, 0x2325cbf29ce48422u};
-    h[0] = (h[0] ^ (uint32_t)c->count) * CHECK_PRIME;
-    h[1] = (h[1] ^ (((uint64_t)(uint32_t)c->hint_a << 32) | (uint32_t)c->hint_b)) * CHECK_PRIME;
-    h[2] = (h[2] ^ c->flags) * CHECK_PRIME;
-    for (int i = 0; i < c->count; ++i) {
-        mix_vec(h, c->point_a[i]);
-        mix_vec(h, c->point_b[i]);
-    }
-    mix_vec(h, c->direction);
-    mix_vec(h, c->direction_prev);
-    return (h[0] ^ (h[1] * CHECK_PRIME)) * CHECK_PRIME ^ h[2];
+/* The header's words: count, hints, flags. */
+static inline check_lanes check_begin(const agjk_cache *c) {
+    check_lanes h;
+    h.x = (0xcbf29ce484222325u ^ (uint32_t)c->count) * CHECK_PRIME;
+    h.y = (0x84222325cbf29ce4u ^ (((uint64_t)(uint32_t)c->hint_a << 32) | (uint32_t)c->hint_b)) *
+          CHECK_PRIME;
+    h.z = (0x2325cbf29ce48422u ^ c->flags) * CHECK_PRIME;
+    return h;
 }
 
-/* Whether p[0..n-1] are all finite and within AGJK_MAX_COORDINATE: one test
- * on the sum of their absolute coordinates (NaN and Inf propagate; a sum out of
- * range only means a cold start). */
-static int in_range(const agjk_vec3 *p, int n) {
-    double sum = 0.0;
-    for (int i = 0; i < n; ++i) sum += v3_norm1(p[i]);
-    return sum <= AGJK_MAX_COORDINATE;
+/* The directions' words, then the three lanes folded into one value. */
+static inline uint64_t check_end(check_lanes h, const agjk_cache *c) {
+    h = mix_vec(mix_vec(h, c->direction), c->direction_prev);
+    return (h.x ^ (h.y * CHECK_PRIME)) * CHECK_PRIME ^ h.z;
 }
 
-/* Whether the cache was filled for the pair (a, b) and holds sane values. */
-static int cache_usable(const agjk_cache *c, const agjk_shape *a, const agjk_shape *b) {
-    if (c->struct_size != sizeof *c) return 0;
-    if (c->count < 0 || c->count > 4) return 0;
-    if (c->support_a != a->support || c->data_a != a->data || c->support_b != b->support ||
-        c->data_b != b->data)
-        return 0;
-    if (c->check != cache_check(c)) return 0;
-    return in_range(&c->direction, 2);
+/* Whether the cache was filled for the pair (a, b), with a count in 0..4
+ * (its content is checked against the check value while it is read). */
+static int cache_of_pair(const agjk_cache *c, const agjk_shape *a, const agjk_shape *b) {
+    return c->struct_size == sizeof *c && c->count >= 0 && c->count <= 4 &&
+           c->support_a == a->support && c->data_a == a->data && c->support_b == b->support &&
+           c->data_b == b->data;
 }
+
+/* Finite and within AGJK_MAX_COORDINATE, for a sum of absolute coordinates
+ * (NaN and Inf propagate into it; a sum out of range only means a cold
+ * start). */
+static int sum_in_range(double sum) { return sum <= AGJK_MAX_COORDINATE; }
 
 /* 2 n1 - n0 for the unit directions n1 (last) and n0 (before), or n1; and
  * the weight of the result (see CACHE_DIRECTION_WEIGHT). */
@@ -169,36 +173,49 @@ static unsigned project_interior(const agjk_vec3 *w, int n, double lambda[4], ag
 int agjk__cache_load(const agjk_cache *cache, const agjk_shape *a, const agjk_shape *b,
                      agjk__minkowski *md, agjk__solve_input *in) {
     in->warm_count = 0;
-    if (!cache || !cache_usable(cache, a, b)) return 0;
+    if (!cache || !cache_of_pair(cache, a, b)) return 0;
+    int n = cache->count;
+    /* Which start the cache gives, decided from its raw content (nothing is
+     * used before the check value has matched). */
+    int has_direction = v3_maxabs(cache->direction) > 0.0;
+    int simplex = n > 0 && in->method != AGJK_METHOD_FRANK_WOLFE &&
+                  ((cache->flags & AGJK_CACHE_FLAT) || n == 4 || !has_direction);
+    /* One pass over the points: their check words, their size, and for the
+     * simplex start their place under md's poses (A's frame is A's local
+     * frame; B's points move with the relative pose). */
+    check_lanes h = check_begin(cache);
+    double size = 0.0;
+    agjk_vec3 w[4];
+    for (int i = 0; i < n; ++i) {
+        agjk_vec3 pa = cache->point_a[i], pb = cache->point_b[i];
+        h = mix_vec(mix_vec(h, pa), pb);
+        if (!simplex) continue;
+        size += v3_norm1(pa) + v3_norm1(pb);
+        agjk__vertex *v = &in->warm[i];
+        v->a = pa;
+        v->b = v3_add(m3_mul(&md->rotation[0][0], pb), md->translation);
+        v->w = w[i] = v3_sub(pa, v->b);
+    }
+    if (cache->check != check_end(h, cache) ||
+        !sum_in_range(v3_norm1(cache->direction) + v3_norm1(cache->direction_prev)))
+        return 0;
     md->hint_a = cache->hint_a;
     md->hint_b = cache->hint_b;
-    int has_direction = v3_maxabs(cache->direction) > 0.0;
-    int simplex = (cache->flags & AGJK_CACHE_FLAT) || cache->count == 4 || !has_direction;
-    if (cache->count == 0 && !has_direction) return 0;
-    if (!simplex || cache->count == 0 || in->method == AGJK_METHOD_FRANK_WOLFE) {
+    if (n == 0 && !has_direction) return 0;
+    if (!simplex) {
         /* A direction only (Frank-Wolfe's active set is its iterate alone). */
         if (has_direction) {
             double weight;
-            agjk_vec3 n = extrapolate(cache->direction, cache->direction_prev, &weight);
-            in->x0 = v3_scale(n, weight * v3_norm(cache->direction));
+            agjk_vec3 dir = extrapolate(cache->direction, cache->direction_prev, &weight);
+            in->x0 = v3_scale(dir, weight * v3_norm(cache->direction));
             in->x0_given = 1;
         }
         return 1;
     }
-    agjk_vec3 w[4];
-    if (!in_range(cache->point_a, cache->count) || !in_range(cache->point_b, cache->count))
-        return 0;
-    for (int i = 0; i < cache->count; ++i) {
-        agjk__vertex *v = &in->warm[i];
-        /* A's frame is A's local frame; B's points move with the relative pose. */
-        v->a = cache->point_a[i];
-        v->b = v3_add(m3_mul(&md->rotation[0][0], cache->point_b[i]), md->translation);
-        v->w = v3_sub(v->a, v->b);
-        w[i] = v->w;
-    }
+    if (!sum_in_range(size)) return 0;
     agjk_vec3 x;
-    unsigned mask = project_interior(w, cache->count, in->warm_lambda, &x);
-    if (!mask) mask = agjk__simplex_project_gjk(w, cache->count, in->warm_lambda, &x);
+    unsigned mask = project_interior(w, n, in->warm_lambda, &x);
+    if (!mask) mask = agjk__simplex_project_gjk(w, n, in->warm_lambda, &x);
     in->warm_mask = mask;
     in->warm_x = x;
     /* The first support goes in direction x, the projection; when the points
@@ -206,22 +223,30 @@ int agjk__cache_load(const agjk_cache *cache, const agjk_shape *a, const agjk_sh
     if (mask == 0xFu || v3_maxabs(x) == 0.0) x = cache->direction;
     if (v3_maxabs(x) == 0.0) x = v3(1.0, 0.0, 0.0);
     in->x0 = x;
-    in->warm_count = cache->count;
+    in->warm_count = n;
     return 1;
 }
 
+/* Whether vertex v is, bit for bit, the warm-start vertex u that load placed
+ * from the cache's own local points. */
+static int same_vertex(const agjk__vertex *v, const agjk__vertex *u) {
+    return v->a.x == u->a.x && v->a.y == u->a.y && v->a.z == u->a.z && v->b.x == u->b.x &&
+           v->b.y == u->b.y && v->b.z == u->b.z;
+}
+
 void agjk__cache_save(agjk_cache *cache, const agjk_shape *a, const agjk_shape *b,
-                      const agjk__minkowski *md, const agjk__solve_output *out) {
+                      const agjk__minkowski *md, const agjk__solve_input *in,
+                      const agjk__solve_output *out) {
     /* The last direction becomes the one before, if the cache was this pair's. */
     agjk_vec3 before = v3(0.0, 0.0, 0.0);
     uint32_t flags_before = 0;
-    if (cache->struct_size == sizeof *cache && cache->support_a == a->support &&
-        cache->data_a == a->data && cache->support_b == b->support && cache->data_b == b->data &&
-        v3_in_range(cache->direction)) {
+    if (cache_of_pair(cache, a, b) && v3_in_range(cache->direction)) {
         before = cache->direction;
         flags_before = cache->flags;
     }
-    double inv = 1.0 / md->scale;
+    /* To the caller's units by inv, a power of two (exact), 1 for problems of
+     * ordinary size (the warm start's case). */
+    double inv = md->scale == 1.0 ? 1.0 : 1.0 / md->scale;
     agjk_vec3 x = v3_scale(out->x, inv);
     cache->struct_size = (uint32_t)sizeof *cache;
     cache->count = 0;
@@ -244,20 +269,30 @@ void agjk__cache_save(agjk_cache *cache, const agjk_shape *a, const agjk_shape *
     double dn = v3_norm(out->direction); /* solver units: in range, squares finite */
     if (dn > 0.0) cache->direction = v3_scale(out->direction, length / dn);
     int n = out->simplex_count < 0 ? 0 : out->simplex_count > 4 ? 4 : out->simplex_count;
-    /* Back to B's local frame: R^T (b - t) (rounding of a few ulps, within the
-     * tolerance warm_consistent allows, solver.c); to the caller's units by
-     * inv, a power of two (exact), skipped when 1 (the warm start's case). */
-    for (int i = 0; i < n; ++i) {
-        cache->point_a[i] = out->simplex[i].a;
-        cache->point_b[i] = m3_tmul(&md->rotation[0][0], v3_sub(out->simplex[i].b, md->translation));
-    }
-    if (inv != 1.0)
-        for (int i = 0; i < n; ++i) {
-            cache->point_a[i] = v3_scale(cache->point_a[i], inv);
-            cache->point_b[i] = v3_scale(cache->point_b[i], inv);
-        }
     cache->count = n;
-    cache->check = cache_check(cache);
+    check_lanes h = check_begin(cache);
+    /* Back to B's local frame: R^T (b - t) (rounding of a few ulps, within the
+     * tolerance warm_consistent allows, solver.c); but a vertex the solver
+     * kept from the warm start in its place (the usual end of a coherent
+     * query on flat shapes) came from the local points at that place in the
+     * cache, which stay (exact, and no rotation). */
+    int kept = inv == 1.0 ? in->warm_count : 0;
+    for (int i = 0; i < n; ++i) {
+        if (i < kept && same_vertex(&out->simplex[i], &in->warm[i])) {
+            h = mix_vec(mix_vec(h, cache->point_a[i]), cache->point_b[i]);
+            continue;
+        }
+        agjk_vec3 pa = out->simplex[i].a;
+        agjk_vec3 pb = m3_tmul(&md->rotation[0][0], v3_sub(out->simplex[i].b, md->translation));
+        if (inv != 1.0) {
+            pa = v3_scale(pa, inv);
+            pb = v3_scale(pb, inv);
+        }
+        cache->point_a[i] = pa;
+        cache->point_b[i] = pb;
+        h = mix_vec(mix_vec(h, pa), pb);
+    }
+    cache->check = check_end(h, cache);
 }
 
 /* The warm-started queries of agjk/cache.h: the common query (query.c) with

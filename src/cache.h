@@ -14,8 +14,11 @@ int agjk__cache_load(const agjk_cache *cache, const agjk_shape *a, const agjk_sh
                      agjk__minkowski *md, agjk__solve_input *in);
 
 /* Stores the solver's final simplex, hints and iterate in `cache` (emptied
- * first; left empty if out holds nothing usable). */
+ * first; left empty if out holds nothing usable); `in` is what
+ * agjk__cache_load gave the solver (vertices it kept need no new local
+ * points). */
 void agjk__cache_save(agjk_cache *cache, const agjk_shape *a, const agjk_shape *b,
-                      const agjk__minkowski *md, const agjk__solve_output *out);
+                      const agjk__minkowski *md, const agjk__solve_input *in,
+                      const agjk__solve_output *out);
 
 #endif

@@ -32,7 +32,7 @@ agjk_status agjk__query_run(const agjk_shape *a, const agjk_pose *pose_a, const 
     agjk__solve(&md, &in, &out);
     if (cache) {
         if (out.outcome == AGJK__BAD_SUPPORT) hooks->reset(cache);
-        else hooks->save(cache, a, b, &md, &out);
+        else hooks->save(cache, a, b, &md, &in, &out);
     }
 
     result->iterations = out.iterations;

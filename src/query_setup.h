@@ -40,7 +40,8 @@ typedef struct agjk__warm_hooks {
     int (*load)(const struct agjk_cache *cache, const agjk_shape *a, const agjk_shape *b,
                 agjk__minkowski *md, agjk__solve_input *in);
     void (*save)(struct agjk_cache *cache, const agjk_shape *a, const agjk_shape *b,
-                 const agjk__minkowski *md, const agjk__solve_output *out);
+                 const agjk__minkowski *md, const agjk__solve_input *in,
+                 const agjk__solve_output *out);
     void (*reset)(struct agjk_cache *cache);
 } agjk__warm_hooks;
 

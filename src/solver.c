@@ -483,6 +483,9 @@ static int tiny_nonzero(double v) { return v != 0.0 && fabs(v) < 0x1p-500; }
  * passed for parallel and certified a wrong gap). A false "no" costs one
  * support call. */
 static AGJK__NOINLINE int parallel(agjk_vec3 d, agjk_vec3 x) {
+    /* d = x bit for bit (a warm start certified by its first support): no
+     * product, so nothing to underflow. */
+    if (d.x == x.x && d.y == x.y && d.z == x.z) return v3_maxabs(x) > 0.0;
     double md = v3_maxabs(d), mx = v3_maxabs(x);
     if (!(md > 0.0) || !(mx > 0.0) || !(v3_dot(d, x) > 0.0)) return 0;
     d = v3_div(d, md);
