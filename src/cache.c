@@ -39,16 +39,21 @@ void agjk_cache_init_sized(agjk_cache *cache, size_t struct_size) {
 #define CACHE_DIRECTION_WEIGHT 100.0
 #define CACHE_TURN_TRUST 0.1
 
-/* A check value of the cache's content, so that garbage or hand-edited memory
- * is not mistaken for a simplex of the pair (not a defence against a
- * deliberate forger, who could as well corrupt the shapes): FNV-1a steps over
- * 64-bit words in three independent lanes, one per coordinate, so that the
- * multiplications overlap (one chain of them was a tenth of a warm query's
- * time on boxes). Every step is a bijection of its lane, so an edit of any
- * one word always changes the value. The pair's pointers are left out: they
- * are compared with the query's own. The words go in a fixed order (header,
- * the count points of A and B, the two directions), mixed in by load and
- * save within the loops that read or write the points anyway. */
+/* A check value of the cached simplex (its count and its points: what the
+ * answer's certificates rest on), so that garbage or hand-edited memory is
+ * not mistaken for a simplex of the pair (not a defence against a deliberate
+ * forger, who could as well corrupt the shapes). The directions, hints and
+ * flags only choose where the query starts: any finite value of them gives
+ * the same certified answer, so they are checked for range only, and a warm
+ * query that ends on the simplex it started from (the usual end on flat
+ * shapes) keeps the check value as it is. FNV-1a steps over 64-bit words in
+ * three independent lanes, one per coordinate, so that the multiplications
+ * overlap (one chain of them was a tenth of a warm query's time on boxes).
+ * Every step is a bijection of its lane, so an edit of any one word always
+ * changes the value. The pair's pointers are left out: they are compared
+ * with the query's own. The words go in a fixed order (count, then the count
+ * points of A and B), mixed in by load and save within the loops that read
+ * or write the points anyway. */
 #define CHECK_PRIME 0x100000001b3u
 
 static uint64_t bits(double v) {
@@ -69,19 +74,17 @@ static inline check_lanes mix_vec(check_lanes h, agjk_vec3 v) {
     return h;
 }
 
-/* The header's words: count, hints, flags. */
+/* The count's word. */
 static inline check_lanes check_begin(const agjk_cache *c) {
     check_lanes h;
     h.x = (0xcbf29ce484222325u ^ (uint32_t)c->count) * CHECK_PRIME;
-    h.y = (0x84222325cbf29ce4u ^ (((uint64_t)(uint32_t)c->hint_a << 32) | (uint32_t)c->hint_b)) *
-          CHECK_PRIME;
-    h.z = (0x2325cbf29ce48422u ^ c->flags) * CHECK_PRIME;
+    h.y = 0x84222325cbf29ce4u;
+    h.z = 0x2325cbf29ce48422u;
     return h;
 }
 
-/* The directions' words, then the three lanes folded into one value. */
-static inline uint64_t check_end(check_lanes h, const agjk_cache *c) {
-    h = mix_vec(mix_vec(h, c->direction), c->direction_prev);
+/* The three lanes folded into one value. */
+static inline uint64_t check_end(check_lanes h) {
     return (h.x ^ (h.y * CHECK_PRIME)) * CHECK_PRIME ^ h.z;
 }
 
@@ -139,8 +142,9 @@ static unsigned project_interior(const agjk_vec3 *w, int n, double lambda[4], ag
         if (!(det > INSIDE_MARGIN * a11 * a22)) return 0;
         double l1 = b1 * a22 - b2 * a12, l2 = a11 * b2 - a12 * b1, m = INSIDE_MARGIN * det;
         if (!(l1 > m && l2 > m && det - l1 - l2 > m)) return 0;
-        lambda[1] = l1 / det;
-        lambda[2] = l2 / det;
+        double inv = 1.0 / det;
+        lambda[1] = l1 * inv;
+        lambda[2] = l2 * inv;
         lambda[0] = 1.0 - lambda[1] - lambda[2];
         *x = v3_add(v3_lerp2(w[0], lambda[0], w[1], lambda[1]), v3_scale(w[2], lambda[2]));
         return 0x7u;
@@ -196,7 +200,7 @@ int agjk__cache_load(const agjk_cache *cache, const agjk_shape *a, const agjk_sh
         v->b = v3_add(m3_mul(&md->rotation[0][0], pb), md->translation);
         v->w = w[i] = v3_sub(pa, v->b);
     }
-    if (cache->check != check_end(h, cache) ||
+    if (cache->check != check_end(h) ||
         !sum_in_range(v3_norm1(cache->direction) + v3_norm1(cache->direction_prev)))
         return 0;
     md->hint_a = cache->hint_a;
@@ -260,25 +264,36 @@ void agjk__cache_save(agjk_cache *cache, const agjk_shape *a, const agjk_shape *
     cache->data_b = b->data;
     cache->hint_a = md->hint_a;
     cache->hint_b = md->hint_b;
-    /* Length: ||x||; but a Boolean query that stopped on its first support
-     * has no point of D yet (x is x_0): keep the previous length. */
-    double length = out->simplex_count == 0 && v3_maxabs(before) > 0.0 ? v3_norm(before) : v3_norm(x);
     cache->direction = x;
     /* The normal of the plane that certified x (or separated the shapes), when
-     * it is not x's own, is the better estimate of x*'s direction (solver.c). */
-    double dn = v3_norm(out->direction); /* solver units: in range, squares finite */
-    if (dn > 0.0) cache->direction = v3_scale(out->direction, length / dn);
+     * it is not x's own, is the better estimate of x*'s direction (solver.c),
+     * with the length ||x||: one square root of a ratio of squares, both in
+     * solver units (in range, squares finite), then to the caller's units. A
+     * Boolean query that stopped on its first support has no point of D yet
+     * (x is x_0): it keeps the previous length. */
+    double dn2 = v3_norm2(out->direction);
+    if (dn2 > 0.0) {
+        double f = out->simplex_count == 0 && v3_maxabs(before) > 0.0
+                       ? v3_norm(before) / sqrt(dn2)
+                       : sqrt(v3_norm2(out->x) / dn2) * inv;
+        cache->direction = v3_scale(out->direction, f);
+    }
     int n = out->simplex_count < 0 ? 0 : out->simplex_count > 4 ? 4 : out->simplex_count;
-    cache->count = n;
-    check_lanes h = check_begin(cache);
     /* Back to B's local frame: R^T (b - t) (rounding of a few ulps, within the
      * tolerance warm_consistent allows, solver.c); but a vertex the solver
      * kept from the warm start in its place (the usual end of a coherent
      * query on flat shapes) came from the local points at that place in the
-     * cache, which stay (exact, and no rotation). */
+     * cache, which stay (exact, and no rotation). When all of them stayed,
+     * with the count, so does the check value load verified. */
     int kept = inv == 1.0 ? in->warm_count : 0;
+    unsigned same = 0;
+    for (int i = 0; i < n && i < kept; ++i)
+        if (same_vertex(&out->simplex[i], &in->warm[i])) same |= 1u << i;
+    cache->count = n;
+    if (kept > 0 && n == kept && same == (1u << n) - 1u) return;
+    check_lanes h = check_begin(cache);
     for (int i = 0; i < n; ++i) {
-        if (i < kept && same_vertex(&out->simplex[i], &in->warm[i])) {
+        if (same & (1u << i)) {
             h = mix_vec(mix_vec(h, cache->point_a[i]), cache->point_b[i]);
             continue;
         }
@@ -292,7 +307,7 @@ void agjk__cache_save(agjk_cache *cache, const agjk_shape *a, const agjk_shape *
         cache->point_b[i] = pb;
         h = mix_vec(mix_vec(h, pa), pb);
     }
-    cache->check = check_end(h, cache);
+    cache->check = check_end(h);
 }
 
 /* The warm-started queries of agjk/cache.h: the common query (query.c) with

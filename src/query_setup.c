@@ -85,11 +85,14 @@ void agjk__core_bounds_of(const agjk__solve_output *out, agjk__core_bounds *b) {
     double rounding = 2.0 * out->noise;
     /* Two certified lower bounds on the core distance ||x*||: the support plane,
      * ||x|| - g / (2 ||x||) = <x, s> / ||x||, and ||x|| - sqrt(g) (eq. 13). */
-    double lower = core - sqrt(gap);
-    if (core > 0.0) {
-        double plane = core - gap / (2.0 * core); /* may be -inf for a denormal x */
-        if (plane > lower) lower = plane;
-    }
+    /* The plane's is the larger one when g <= 4 ||x||^2 (the usual case, g
+     * small), so the square root is taken only otherwise. Either bound is
+     * certified, so rounding at the switch does not matter. */
+    double lower;
+    if (core > 0.0 && gap <= 4.0 * core * core)
+        lower = core - gap / (2.0 * core);
+    else
+        lower = core - sqrt(gap);
     b->core = core;
     b->gap = gap;
     b->lower = lower - rounding;

@@ -167,17 +167,23 @@ static inline agjk__outcome gap_verdict(const solver *sv, double g, double xs2) 
  * iteration cap); only shapes that touch to within what those resolve (or to
  * the floating-point floor, AGJK__AT_FLOOR) end as contact. Measured on the
  * paper's protocol (1e-8, 1e-4 deep overlaps): every "contact" became a
- * verdict, at +0.01 support calls per query for GJK and +0.07 for the
+ * verdict, at +0.01 support calls per query for GJK and +0.1 for the
  * adaptive method on overlapping sets; on the coherent-motion benchmark no
  * status differs between cold and warm queries (12 did of 4000 ellipsoid
  * ones; a budget of 8 left 1, 32 none, 1000 the same as 32). Returns 1 when
  * the loop must go on (and spends one of the budget). */
 #define SIGN_SEEK_ITERATIONS 32
+
+/* Whether a gap g at x certifies separation: the lower bound ||x|| -
+ * g / (2 ||x||), less the rounding, above the margins (as query.c reads it). */
+static int gap_separates(const solver *sv, double g) {
+    /* ||x|| - g / (2 ||x||) > r  <=>  2 ||x||^2 - g > 2 ||x|| r, squared (r >= 0). */
+    double r = sv->md->margin + 2.0 * sv->md->noise, t = 2.0 * sv->x2 - g;
+    return t > 0.0 && t * t > 4.0 * sv->x2 * r * r;
+}
+
 static int sign_pending(solver *sv, double g, int k) {
-    if (sv->sign_budget <= 0 || k + 1 >= sv->in->max_iterations) return 0;
-    double core = sqrt(sv->x2);
-    double lower = core - g / (2.0 * core) - 2.0 * sv->md->noise;
-    if (lower > sv->md->margin) return 0;
+    if (sv->sign_budget <= 0 || k + 1 >= sv->in->max_iterations || gap_separates(sv, g)) return 0;
     --sv->sign_budget;
     sv->seek_sign = 1; /* momentum off at the end of this iteration, not before:
                         * this iteration's support may still be a momentum one */
@@ -552,10 +558,13 @@ static int warm_consistent(const agjk_vec3 *w, int count, agjk_vec3 d, const agj
                            double noise) {
     /* s minimises <d, .> over D: every point of D has <d, p> >= <d, s>, up to
      * the rounding of the points (a few ulps of the problem's size). */
-    double dn = v3_norm(d);
-    double floor = v3_dot(d, s->w) - 8.0 * noise * dn;
-    for (int i = 0; i < count; ++i)
-        if (v3_dot(d, w[i]) < floor) return 0;
+    double ds = v3_dot(d, s->w), slack2 = 64.0 * noise * noise * v3_norm2(d);
+    for (int i = 0; i < count; ++i) {
+        /* <d, w_i> >= <d, s> - 8 noise |d|, without the square root when
+         * w_i is on the plane's side (the usual case). */
+        double below = ds - v3_dot(d, w[i]);
+        if (below > 0.0 && below * below > slack2) return 0;
+    }
     return 1;
 }
 
@@ -592,6 +601,49 @@ static void first_support(solver *sv, agjk__vertex *s, agjk__solve_output *out) 
     sv->abs_tolerance = sv->in->tolerance * md->scale * md->scale;
 }
 
+/* The solver's output from its final state: the iterate, a member point of
+ * D near it, the witness points and the active set. */
+static void finish(const solver *sv, agjk__solve_output *out) {
+    const agjk__solve_input *in = sv->in;
+    out->x = sv->x;
+    out->x_member = sv->count > 0 ? member_point(sv) : sv->x;
+    out->noise = sv->md->noise;
+    agjk_vec3 a = v3(0.0, 0.0, 0.0), b = v3(0.0, 0.0, 0.0);
+    for (int i = 0; in->want_witness && i < sv->count; ++i) {
+        a = v3_add(a, v3_scale(sv->a[i], sv->lambda[i]));
+        b = v3_add(b, v3_scale(sv->b[i], sv->lambda[i]));
+    }
+    out->a = a;
+    out->b = b;
+    /* The final active set, for EPA and the cache (a and b with keep_points). */
+    for (int i = 0; i < sv->count; ++i) {
+        out->simplex[i].w = sv->w[i];
+        out->simplex[i].a = in->keep_points ? sv->a[i] : v3(0.0, 0.0, 0.0);
+        out->simplex[i].b = in->keep_points ? sv->b[i] : v3(0.0, 0.0, 0.0);
+    }
+    out->simplex_count = sv->count;
+    out->flat = sv->m.flat_seen;
+}
+
+/* Warm start on flat shapes, the usual case after a small motion: the first
+ * support, in the direction of the cached simplex's projection x, meets no
+ * cached point beyond its plane and certifies x with a gap that meets the
+ * tolerance and shows the shapes apart. Exactly the loop's verdict at k = 0
+ * (its gap test, or for the adaptive method the plane of that same support,
+ * which then gives the same gap), without setting up the loop. Returns 1 with
+ * out->outcome and the gap set. */
+static int warm_certified(solver *sv, agjk_vec3 d, const agjk__vertex *s,
+                          agjk__solve_output *out) {
+    if (sv->count == 4 || !warm_consistent(sv->w, sv->count, d, s, sv->md->noise)) return 0;
+    double g = 2.0 * v3_dot(sv->x, v3_sub(sv->x, s->w));
+    if (gap_lies(sv, g) || gap_verdict(sv, g, 0.0) != AGJK__CONVERGED || !gap_separates(sv, g))
+        return 0;
+    out->gap = g;
+    out->gap_valid = 1;
+    out->outcome = AGJK__CONVERGED;
+    return 1;
+}
+
 void agjk__solve(agjk__minkowski *md, const agjk__solve_input *in, agjk__solve_output *out) {
     solver sv;
     sv.md = md;
@@ -623,19 +675,14 @@ void agjk__solve(agjk__minkowski *md, const agjk__solve_input *in, agjk__solve_o
 
     sv.lambda[0] = 1.0;
     sv.lambda[1] = sv.lambda[2] = sv.lambda[3] = 0.0;
-    /* x_0 in solver units: d_{-1} = s_{-1} = x_0. */
-    agjk__momentum_init(&sv.m, in->method, sv.x, in->x0_given);
-    int adaptive = in->method == AGJK_METHOD_ADAPTIVE;
     int have_x = 0;      /* x is a point of D (after the first projection) */
-    int stalled = 0;     /* consecutive iterations without progress */
     int warm = 0, warm_enclosed = 0; /* cached points in the simplex (cache.c) */
     /* Warm-started points carry a few more ulps from their frame changes:
      * warm_consistent lets each lie up to 8 noise beyond a support plane, so a
      * gap (2 ||x|| times the distance beyond the plane) proves a lie only well
      * beyond 16 ||x|| noise. */
     sv.lie_factor = in->warm_count > 0 ? 32.0 : 4.0;
-    sv.sign_budget = SIGN_SEEK_ITERATIONS;
-    sv.seek_sign = 0;
+    sv.m.flat_seen = 0;
 
     /* Warm start: the cached simplex is the active set at k = 0, and plain GJK
      * directions take it from there (cache.c). Only for problems of ordinary
@@ -646,8 +693,18 @@ void agjk__solve(agjk__minkowski *md, const agjk__solve_input *in, agjk__solve_o
         have_x = 1;
         warm = 1;
         warm_enclosed = sv.count == 4;
-        sv.m.active = 0;
+        if (warm_certified(&sv, d0, &s, out)) {
+            finish(&sv, out);
+            return;
+        }
     }
+    /* x_0 in solver units: d_{-1} = s_{-1} = x_0. */
+    agjk__momentum_init(&sv.m, in->method, d0, in->x0_given);
+    if (warm) sv.m.active = 0;
+    int adaptive = in->method == AGJK_METHOD_ADAPTIVE;
+    int stalled = 0;     /* consecutive iterations without progress */
+    sv.sign_budget = SIGN_SEEK_ITERATIONS;
+    sv.seek_sign = 0;
     for (int k = 0; k < in->max_iterations; ++k) {
         out->iterations = k + 1;
         agjk_vec3 d = k == 0 ? d0 : sv.x;
@@ -839,22 +896,5 @@ void agjk__solve(agjk__minkowski *md, const agjk__solve_input *in, agjk__solve_o
         }
     }
 
-    out->x = sv.x;
-    out->x_member = sv.count > 0 ? member_point(&sv) : sv.x;
-    out->noise = md->noise;
-    agjk_vec3 a = v3(0.0, 0.0, 0.0), b = v3(0.0, 0.0, 0.0);
-    for (int i = 0; in->want_witness && i < sv.count; ++i) {
-        a = v3_add(a, v3_scale(sv.a[i], sv.lambda[i]));
-        b = v3_add(b, v3_scale(sv.b[i], sv.lambda[i]));
-    }
-    out->a = a;
-    out->b = b;
-    /* The final active set, for EPA and the cache (a and b with keep_points). */
-    for (int i = 0; i < sv.count; ++i) {
-        out->simplex[i].w = sv.w[i];
-        out->simplex[i].a = in->keep_points ? sv.a[i] : v3(0.0, 0.0, 0.0);
-        out->simplex[i].b = in->keep_points ? sv.b[i] : v3(0.0, 0.0, 0.0);
-    }
-    out->simplex_count = sv.count;
-    out->flat = sv.m.flat_seen;
+    finish(&sv, out);
 }

@@ -17,10 +17,11 @@
  *
  * Answers stay certified whatever the cache holds:
  * - The cache records which pair filled it (the two support functions and data
- *   pointers, in order) and a check value of its content. For any other pair,
+ *   pointers, in order) and a check value of its simplex. For any other pair,
  *   and for a cache whose check value does not match, or holding NaN, Inf,
  *   out-of-range values or a bad count (zeroed, garbage or edited memory), it
- *   is ignored and the query runs cold.
+ *   is ignored and the query runs cold. Garbage in the directions, hints or
+ *   flags (finite, in range) only changes where the query starts.
  * - Every support found during the query is a plane that no point of the shapes
  *   crosses; a cached point on the wrong side of one is proof that the cache is
  *   stale, and the query restarts cold (its support calls are still counted).
@@ -71,10 +72,11 @@ typedef struct agjk_cache {
      *  the plane that certified the answer) in A's local frame, length units,
      *  and the one of the query before (zero if none). */
     agjk_vec3 direction, direction_prev;
-    /** Check value of the fields above but the pair's pointers (those are
-     *  compared with the query's shapes), written by every cached query: a
-     *  cache whose content does not match it (garbage, or edited by hand) is
-     *  ignored. */
+    /** Check value of `count` and the simplex points, written by every cached
+     *  query that changes them: a cache whose simplex does not match it
+     *  (garbage, or edited by hand) is ignored. The pair's pointers are
+     *  compared with the query's shapes; the directions, hints and flags only
+     *  choose where the query starts, and are checked for range. */
     uint64_t check;
     /** Reserved for later versions; written as zero. */
     double reserved[4];

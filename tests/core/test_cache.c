@@ -246,6 +246,15 @@ START_TEST(foreign_and_garbage) {
                         if (field == 3) cache.direction_prev.z = bad[b];
                         expect_ignored("bad value", &p, &cache, boolean);
                     }
+                /* the right pair, a point edited within range (by one ulp, or
+                 * moved far off the shapes): the check value catches it */
+                for (int e = 0; e < 2; e++) {
+                    fill(&p, &cache);
+                    cache.flags = AGJK_CACHE_FLAT;
+                    agjk_vec3 *pt = &cache.point_b[cache.count - 1];
+                    pt->x = e == 0 ? nextafter(pt->x, INFINITY) : pt->x - 3.0 * p.size;
+                    expect_ignored("edited point", &p, &cache, boolean);
+                }
                 static const int32_t counts[] = {-1, 5, INT32_MIN, 1 << 30};
                 for (int c = 0; c < 4; c++) {
                     fill(&p, &cache);
