@@ -154,6 +154,14 @@ static inline agjk__outcome gap_verdict(const solver *sv, double g, double xs2) 
     return AGJK__ITERATION_CAP;
 }
 
+/* Whether a gap g at x certifies separation: the lower bound ||x|| -
+ * g / (2 ||x||), less the rounding, above the margins (as query.c reads it). */
+static int gap_separates(const solver *sv, double g) {
+    /* ||x|| - g / (2 ||x||) > r  <=>  2 ||x||^2 - g > 2 ||x|| r, squared (r >= 0). */
+    double r = sv->md->margin + 2.0 * sv->md->noise, t = 2.0 * sv->x2 - g;
+    return t > 0.0 && t * t > 4.0 * sv->x2 * r * r;
+}
+
 /* A gap g at x that meets the tolerance ends the query only once it also
  * decides the sign: a lower bound above the margins (separated; ||x|| -
  * g / (2 ||x||) less the rounding, as query.c certifies it), or an enclosure
@@ -177,15 +185,6 @@ static inline agjk__outcome gap_verdict(const solver *sv, double g, double xs2) 
  * box, 6 instead of 4); budgets of 8 and 16 cost 15.0 and 18.1 there.
  * Returns 1 when the loop must go on (and spends one of the budget). */
 #define SIGN_SEEK_ITERATIONS 32
-
-/* Whether a gap g at x certifies separation: the lower bound ||x|| -
- * g / (2 ||x||), less the rounding, above the margins (as query.c reads it). */
-static int gap_separates(const solver *sv, double g) {
-    /* ||x|| - g / (2 ||x||) > r  <=>  2 ||x||^2 - g > 2 ||x|| r, squared (r >= 0). */
-    double r = sv->md->margin + 2.0 * sv->md->noise, t = 2.0 * sv->x2 - g;
-    return t > 0.0 && t * t > 4.0 * sv->x2 * r * r;
-}
-
 static int sign_pending(solver *sv, double g, int k) {
     if (sv->sign_budget <= 0 || k + 1 >= sv->in->max_iterations || gap_separates(sv, g)) return 0;
     --sv->sign_budget;
