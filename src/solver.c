@@ -245,9 +245,13 @@ static const int tetra_faces[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}
  * factor 5 instead of 4 also covers the determinant's own rounding (a few
  * eps |w|^3, at most about 1.3 noise max |w_i|^2). */
 static unsigned shallow_faces(const agjk_vec3 w[4], double noise) {
-    double h[4], big = 0.0;
-    for (int f = 0; f < 4; ++f) {
-        h[f] = -v3_dot(w[tetra_faces[f][0]], v3_cross(w[tetra_faces[f][1]], w[tetra_faces[f][2]]));
+    /* h_f = -det of face f's vertices in tetra_faces' order, from three cross
+     * products (a cross product with its factors swapped is the exact
+     * negation, so these are the determinants bit for bit). */
+    agjk_vec3 c23 = v3_cross(w[2], w[3]), c13 = v3_cross(w[1], w[3]), c12 = v3_cross(w[1], w[2]);
+    double h[4] = {-v3_dot(w[1], c23), v3_dot(w[0], c23), -v3_dot(w[0], c13), v3_dot(w[0], c12)};
+    double big = v3_norm2(w[0]);
+    for (int f = 1; f < 4; ++f) {
         double ww = v3_norm2(w[f]);
         if (ww > big) big = ww;
     }
