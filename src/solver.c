@@ -613,7 +613,8 @@ static void first_support(solver *sv, agjk__vertex *s, agjk__solve_output *out) 
 static void finish(const solver *sv, agjk__solve_output *out) {
     const agjk__solve_input *in = sv->in;
     out->x = sv->x;
-    out->x_member = sv->count > 0 ? member_point(sv) : sv->x;
+    /* (An overlap has no upper bound to certify: no member point needed.) */
+    out->x_member = sv->count > 0 && out->outcome != AGJK__INTERSECTING ? member_point(sv) : sv->x;
     out->noise = sv->md->noise;
     agjk_vec3 a = v3(0.0, 0.0, 0.0), b = v3(0.0, 0.0, 0.0);
     for (int i = 0; in->want_witness && i < sv->count; ++i) {

@@ -92,7 +92,8 @@ typedef struct agjk__solve_output {
     /* sum lambda_i w_i over the final active set: a point of D up to the
      * rounding of the points, however ill-conditioned the projection that
      * gave x was (a sliver's foot can be far off its plane); ||x_member||
-     * is the certified upper bound on the core distance. */
+     * is the certified upper bound on the core distance. x itself after an
+     * overlap (AGJK__INTERSECTING), which has no upper bound to certify. */
     agjk_vec3 x_member;
     agjk_vec3 a, b;      /* core points on A and B with a - b = x (A's frame) */
     agjk_vec3 direction; /* separating direction (SEPARATED_EARLY), or the normal of
