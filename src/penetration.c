@@ -32,6 +32,7 @@ typedef struct gjk_summary {
 static void run_gjk(agjk__minkowski *md, agjk__solve_input *in, agjk__solve_output *out,
                     gjk_summary *g) {
     in->want_witness = 1; /* EPA's degenerate cases use GJK's points */
+    in->want_simplex = 1; /* EPA starts from GJK's final simplex */
     agjk__solve(md, in, out);
     g->bad_support = out->outcome == AGJK__BAD_SUPPORT;
     g->intersecting = out->outcome == AGJK__INTERSECTING;

@@ -26,6 +26,7 @@ agjk_status agjk__query_run(const agjk_shape *a, const agjk_pose *pose_a, const 
     in.want_witness = in.want_witness && !boolean_mode;
     in.keep_points = in.want_witness || cache; /* the cache keeps the simplex */
     in.track_flat = cache != NULL;
+    in.want_simplex = cache != NULL;
     if (cache) hooks->load(cache, a, b, &md, &in); /* warm start (cache.c) */
 
     agjk__solve_output out;

@@ -72,6 +72,7 @@ int agjk__query_prepare(const agjk_shape *a, const agjk_pose *pose_a, const agjk
     in->x0_given = opts->use_initial_direction != 0;
     in->keep_points = in->want_witness;
     in->track_flat = 0;
+    in->want_simplex = 0;
     in->warm_count = 0;
     return 1;
 }

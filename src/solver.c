@@ -624,12 +624,13 @@ static void finish(const solver *sv, agjk__solve_output *out) {
     out->a = a;
     out->b = b;
     /* The final active set, for EPA and the cache (a and b with keep_points). */
-    for (int i = 0; i < sv->count; ++i) {
+    int n = in->want_simplex ? sv->count : 0;
+    for (int i = 0; i < n; ++i) {
         out->simplex[i].w = sv->w[i];
         out->simplex[i].a = in->keep_points ? sv->a[i] : v3(0.0, 0.0, 0.0);
         out->simplex[i].b = in->keep_points ? sv->b[i] : v3(0.0, 0.0, 0.0);
     }
-    out->simplex_count = sv->count;
+    out->simplex_count = n;
     out->flat = sv->m.flat_seen;
 }
 

@@ -77,6 +77,9 @@ typedef struct agjk__solve_input {
     int keep_points;
     /* Record whether a point of A or B came back (flat faces; the cache keeps it). */
     int track_flat;
+    /* Copy the final active set to the output (EPA, the cache); otherwise
+     * simplex_count is 0. */
+    int want_simplex;
     /* Warm start (cache.c): up to 4 points of D in A's frame, caller units,
      * whose projection is x0; warm_count 0 for a cold start. */
     int warm_count;
