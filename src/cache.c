@@ -211,8 +211,14 @@ int agjk__cache_load(const agjk_cache *cache, const agjk_shape *a, const agjk_sh
         if (has_direction) {
             double weight;
             agjk_vec3 dir = extrapolate(cache->direction, cache->direction_prev, &weight);
-            in->x0 = v3_scale(dir, weight * v3_norm(cache->direction));
-            in->x0_given = 1;
+            /* ||direction|| from its unit multiple (a tiny direction's
+             * square underflows): x_0 must not be zero. */
+            double m = v3_maxabs(cache->direction);
+            agjk_vec3 x0 = v3_scale(dir, weight * (m * v3_norm(v3_div(cache->direction, m))));
+            if (v3_maxabs(x0) > 0.0) {
+                in->x0 = x0;
+                in->x0_given = 1;
+            }
         }
         return 1;
     }

@@ -157,6 +157,57 @@ static void check_signed(const agjk_shape *a, const agjk_pose *pa, const agjk_sh
                "signed says %s, distance says %s", agjk_status_string(ss), agjk_status_string(sd));
 }
 
+/* The warm-start cache: filled by a query at another pose of B (a stale
+ * cache), its start fields (directions, hints, flags: outside the check
+ * value) possibly overwritten with fuzzed values, then used at the real
+ * poses. Whatever it holds, the cached answer is as certified as the cold
+ * one: same invalid-input verdict, finite fields, no contradicting verdict,
+ * overlapping certified intervals, a well-formed cache afterwards. */
+static void check_cached(const agjk_shape *a, const agjk_pose *pa, const agjk_shape *b,
+                         const agjk_pose *pb, const agjk_options *o, int exact, fuzz_reader *r) {
+    agjk_pose p2;
+    fz_pose(r, &p2);
+    uint8_t mutate = fz_u8(r);
+    for (int boolean = 0; boolean < 2; boolean++) {
+        agjk_cache c;
+        agjk_result cold, fill, warm;
+        agjk_cache_init(&c);
+        agjk_status sc = boolean ? agjk_collide(a, pa, b, pb, o, &cold)
+                                 : agjk_distance(a, pa, b, pb, o, &cold);
+        if (boolean) agjk_collide_cached(a, pa, b, &p2, o, &c, &fill);
+        else agjk_distance_cached(a, pa, b, &p2, o, &c, &fill);
+        if (mutate & 1) c.direction.x = fz_double(r), c.direction.y = fz_double(r), c.direction.z = fz_double(r);
+        if (mutate & 2) c.direction_prev.x = fz_double(r), c.direction_prev.z = fz_double(r);
+        if (mutate & 4) c.hint_a = (int32_t)fz_u16(r) - 1000, c.hint_b = (int32_t)fz_u16(r) * 7;
+        if (mutate & 8) c.flags = fz_u8(r);
+        agjk_status sw = boolean ? agjk_collide_cached(a, pa, b, pb, o, &c, &warm)
+                                 : agjk_distance_cached(a, pa, b, pb, o, &c, &warm);
+#ifdef FUZZ_DEBUG
+        fprintf(stderr, "cached %s: %s d %.17g bound %g it %d (cold %s d %.17g bound %g)\n",
+                boolean ? "collide" : "distance", agjk_status_string(sw), warm.distance, warm.bound,
+                warm.iterations, agjk_status_string(sc), cold.distance, cold.bound);
+#endif
+        FUZZ_CHECK(sw == warm.status && (unsigned)sw <= AGJK_STATUS_INVALID_INPUT, "cached status %d", sw);
+        FUZZ_CHECK(fz_finite_result(&warm), "cached result not finite");
+        if (sc == AGJK_STATUS_INVALID_INPUT && cold.support_calls == 0)
+            FUZZ_CHECK(sw == AGJK_STATUS_INVALID_INPUT, "cold rejects the input, cached accepts");
+        FUZZ_CHECK(c.struct_size == sizeof c && c.count >= 0 && c.count <= 4, "cache left malformed");
+        if (!exact || sw == AGJK_STATUS_INVALID_INPUT || sc == AGJK_STATUS_INVALID_INPUT) continue;
+        FUZZ_CHECK(!((sw == AGJK_STATUS_SEPARATED && sc == AGJK_STATUS_INTERSECTING) ||
+                     (sw == AGJK_STATUS_INTERSECTING && sc == AGJK_STATUS_SEPARATED)),
+                   "cached says %s, cold says %s", agjk_status_string(sw), agjk_status_string(sc));
+        if (boolean) continue;
+        double scale = fabs(pa->translation.x) + fabs(pa->translation.y) + fabs(pa->translation.z) +
+                       fabs(pb->translation.x) + fabs(pb->translation.y) + fabs(pb->translation.z) +
+                       fz_extent(a) + fz_extent(b) + a->margin + b->margin;
+        double slack = 1e-12 * scale + 16 * 4.9406564584124654e-324;
+        FUZZ_CHECK(warm.distance + slack >= cold.distance - cold.bound &&
+                       cold.distance + slack >= warm.distance - warm.bound,
+                   "cached [%.17g, %.17g] and cold [%.17g, %.17g] apart", warm.distance - warm.bound,
+                   warm.distance, cold.distance - cold.bound, cold.distance);
+    }
+}
+
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
     fuzz_reader r = {data, size, 0};
     fz_shape a, b;
@@ -185,13 +236,11 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
             o.use_initial_direction, o.initial_direction.x, o.initial_direction.y,
             o.initial_direction.z, a.shape.margin, b.shape.margin);
 #endif
-    if (fz_u8(&r) == 1) {
-        /* NULL options: the defaults. */
-        fz_check_pair(a.valid ? &a.shape : NULL, &pa, b.valid ? &b.shape : NULL, &pb, NULL, exact);
-        check_signed(a.valid ? &a.shape : NULL, &pa, b.valid ? &b.shape : NULL, &pb, NULL, exact);
-    } else {
-        fz_check_pair(a.valid ? &a.shape : NULL, &pa, b.valid ? &b.shape : NULL, &pb, &o, exact);
-        check_signed(a.valid ? &a.shape : NULL, &pa, b.valid ? &b.shape : NULL, &pb, &o, exact);
-    }
+    const agjk_options *opts = fz_u8(&r) == 1 ? NULL : &o; /* NULL: the defaults */
+    const agjk_shape *sa = a.valid ? &a.shape : NULL, *sb = b.valid ? &b.shape : NULL;
+    fz_check_pair(sa, &pa, sb, &pb, opts, exact);
+    check_signed(sa, &pa, sb, &pb, opts, exact);
+    /* Only with shapes: the cache records the pair's pointers. */
+    if (sa && sb) check_cached(sa, &pa, sb, &pb, opts, exact, &r);
     return 0;
 }
