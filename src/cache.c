@@ -8,6 +8,8 @@
  * value in it is finite and in range; during the query each support plane is
  * checked against the cached points (agjk__warm_consistent), and a point cut
  * off by one drops them all: the query goes on from that support (solver.c). */
+#include <float.h>
+#include <math.h>
 #include <string.h>
 
 #include "agjk/cache.h"
@@ -74,11 +76,11 @@ static inline check_lanes mix_vec(check_lanes h, agjk_vec3 v) {
     return h;
 }
 
-/* The count's word. */
+/* The words of the count and of the points' error bound. */
 static inline check_lanes check_begin(const agjk_cache *c) {
     check_lanes h;
     h.x = (0xcbf29ce484222325u ^ (uint32_t)c->count) * CHECK_PRIME;
-    h.y = 0x84222325cbf29ce4u;
+    h.y = (0x84222325cbf29ce4u ^ bits(c->point_error)) * CHECK_PRIME;
     h.z = 0x2325cbf29ce48422u;
     return h;
 }
@@ -174,6 +176,23 @@ static unsigned project_interior(const agjk_vec3 *w, int n, double lambda[4], ag
     return 0;
 }
 
+/* The start from the cache's direction alone (curved shapes, or a simplex
+ * that cannot serve): x_0 extrapolated from the last two directions. */
+static int load_direction(const agjk_cache *cache, agjk__solve_input *in, int has_direction) {
+    if (!has_direction) return 1;
+    double weight;
+    agjk_vec3 dir = extrapolate(cache->direction, cache->direction_prev, &weight);
+    /* ||direction|| from its unit multiple (a tiny direction's square
+     * underflows): x_0 must not be zero. */
+    double m = v3_maxabs(cache->direction);
+    agjk_vec3 x0 = v3_scale(dir, weight * (m * v3_norm(v3_div(cache->direction, m))));
+    if (v3_maxabs(x0) > 0.0) {
+        in->x0 = x0;
+        in->x0_given = 1;
+    }
+    return 1;
+}
+
 int agjk__cache_load(const agjk_cache *cache, const agjk_shape *a, const agjk_shape *b,
                      agjk__minkowski *md, agjk__solve_input *in) {
     in->warm_count = 0;
@@ -201,28 +220,30 @@ int agjk__cache_load(const agjk_cache *cache, const agjk_shape *a, const agjk_sh
         v->w = w[i] = v3_sub(pa, v->b);
     }
     if (cache->check != check_end(h) ||
-        !sum_in_range(v3_norm1(cache->direction) + v3_norm1(cache->direction_prev)))
+        !sum_in_range(v3_norm1(cache->direction) + v3_norm1(cache->direction_prev)) ||
+        !(cache->point_error >= 0.0 && cache->point_error <= AGJK_MAX_COORDINATE))
         return 0;
     md->hint_a = cache->hint_a;
     md->hint_b = cache->hint_b;
     if (n == 0 && !has_direction) return 0;
-    if (!simplex) {
-        /* A direction only (Frank-Wolfe's active set is its iterate alone). */
-        if (has_direction) {
-            double weight;
-            agjk_vec3 dir = extrapolate(cache->direction, cache->direction_prev, &weight);
-            /* ||direction|| from its unit multiple (a tiny direction's
-             * square underflows): x_0 must not be zero. */
-            double m = v3_maxabs(cache->direction);
-            agjk_vec3 x0 = v3_scale(dir, weight * (m * v3_norm(v3_div(cache->direction, m))));
-            if (v3_maxabs(x0) > 0.0) {
-                in->x0 = x0;
-                in->x0_given = 1;
-            }
-        }
-        return 1;
-    }
+    /* A direction only (Frank-Wolfe's active set is its iterate alone). */
+    if (!simplex) return load_direction(cache, in, has_direction);
     if (!sum_in_range(size)) return 0;
+    /* The cached points of B lie within point_error of B (save): the rounding
+     * allowances of this query, multiples of md->noise, must cover that
+     * (md->scale is still 1 here: caller's units are solver units). Up to
+     * about 16 times the rounding of fresh points (4 eps times the problem's
+     * size, here over-estimated by the points' summed 1-norms) that costs
+     * nothing that matters; a cache filled far from the origin, or under a
+     * rotation far less orthonormal than double precision, carries more, and
+     * would make this query less precise than a cold one: then only its
+     * direction serves. */
+    if (cache->point_error > 64.0 * DBL_EPSILON * (md->translation_size + size)) {
+        in->warm_count = 0;
+        return load_direction(cache, in, has_direction);
+    }
+    md->noise_floor = cache->point_error;
+    if (md->noise < md->noise_floor) md->noise = md->noise_floor;
     agjk_vec3 x;
     unsigned mask = project_interior(w, n, in->warm_lambda, &x);
     if (!mask) mask = agjk__simplex_project_gjk(w, n, in->warm_lambda, &x);
@@ -236,6 +257,33 @@ int agjk__cache_load(const agjk_cache *cache, const agjk_shape *a, const agjk_sh
     in->warm_count = n;
     return 1;
 }
+
+/* How far R^T R is from the identity (R: B's frame -> A's frame, the
+ * product of the two poses' rotations, each orthonormal only to within
+ * 1e-6): the largest |(R^T R - I)_ij|. R^T then inverts R only to within it. */
+static double rotation_skew(const double *r) {
+    agjk_vec3 c0 = v3(r[0], r[3], r[6]), c1 = v3(r[1], r[4], r[7]), c2 = v3(r[2], r[5], r[8]);
+    double e[6] = {v3_norm2(c0) - 1.0, v3_norm2(c1) - 1.0, v3_norm2(c2) - 1.0,
+                   v3_dot(c0, c1),     v3_dot(c0, c2),     v3_dot(c1, c2)};
+    double m = 0.0;
+    for (int i = 0; i < 6; ++i) m = fabs(e[i]) > m ? fabs(e[i]) : m;
+    return m;
+}
+
+/* A bound on how far pb = R^T (b - t), computed, lies from the local point
+ * p of B with b = R p + t computed (solver units): (R^T R - I) p, at most
+ * skew |p|_1 (p within a hair of pb), plus the rounding of the forward
+ * transform, of b - t and of the product with R^T, each a few eps of
+ * |p|_1, |b|_1 and |t|_1. Twice the first-order terms, for margin: far
+ * from the origin (|t| much larger than B) this is what a cache filled
+ * there carries to every later pose. */
+static double point_error_of(agjk_vec3 pb, agjk_vec3 b, agjk_vec3 t, double skew) {
+    double p1 = v3_norm1(pb), t1 = v3_norm1(t);
+    return 2.0 * skew * p1 + 16.0 * DBL_EPSILON * (p1 + v3_norm1(b) + 2.0 * t1);
+}
+
+/* Rounding of a scaling by a power of two whose result is subnormal. */
+#define SUBNORMAL_ROUNDING 0x1p-1070
 
 /* Whether vertex v is, bit for bit, the warm-start vertex u that load placed
  * from the cache's own local points. */
@@ -260,7 +308,7 @@ void agjk__cache_save(agjk_cache *cache, const agjk_shape *a, const agjk_shape *
     agjk_vec3 x = v3_scale(out->x, inv);
     cache->struct_size = (uint32_t)sizeof *cache;
     cache->count = 0;
-    for (int i = 0; i < 4; ++i) cache->reserved[i] = 0.0;
+    for (int i = 0; i < 3; ++i) cache->reserved[i] = 0.0;
     if (!v3_in_range(x)) return;
     cache->direction_prev = before;
     cache->flags = out->flat || (flags_before & AGJK_CACHE_FLAT) ? AGJK_CACHE_FLAT : 0u;
@@ -297,22 +345,27 @@ void agjk__cache_save(agjk_cache *cache, const agjk_shape *a, const agjk_shape *
         if (same_vertex(&out->simplex[i], &in->warm[i])) same |= 1u << i;
     cache->count = n;
     if (kept > 0 && n == kept && same == (1u << n) - 1u) return;
-    check_lanes h = check_begin(cache);
+    /* Points kept keep their bound; the others get the bound of their
+     * recovery (point_error_of). */
+    double error = same ? cache->point_error : 0.0;
+    double skew = same == (1u << n) - 1u ? 0.0 : rotation_skew(&md->rotation[0][0]);
     for (int i = 0; i < n; ++i) {
-        if (same & (1u << i)) {
-            h = mix_vec(mix_vec(h, cache->point_a[i]), cache->point_b[i]);
-            continue;
-        }
+        if (same & (1u << i)) continue;
         agjk_vec3 pa = out->simplex[i].a;
         agjk_vec3 pb = m3_tmul(&md->rotation[0][0], v3_sub(out->simplex[i].b, md->translation));
+        double e = point_error_of(pb, out->simplex[i].b, md->translation, skew) * inv;
         if (inv != 1.0) {
             pa = v3_scale(pa, inv);
             pb = v3_scale(pb, inv);
+            e += SUBNORMAL_ROUNDING; /* the scaling back rounds among subnormals */
         }
         cache->point_a[i] = pa;
         cache->point_b[i] = pb;
-        h = mix_vec(mix_vec(h, pa), pb);
+        if (e > error) error = e;
     }
+    cache->point_error = error;
+    check_lanes h = check_begin(cache);
+    for (int i = 0; i < n; ++i) h = mix_vec(mix_vec(h, cache->point_a[i]), cache->point_b[i]);
     cache->check = check_end(h);
 }
 

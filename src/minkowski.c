@@ -65,6 +65,7 @@ void agjk__minkowski_init(agjk__minkowski *md, const agjk_shape *a, const agjk_p
     }
     md->translation = m3_tmul(ra, v3_sub(pose_b->translation, pose_a->translation));
     md->translation_size = v3_maxabs(md->translation);
+    md->noise_floor = 0.0;
     agjk__minkowski_grow(md, 0.0);
     /* set_limits for scale 1, except that the problem's size is unknown until
      * the first support: unit-size directions until agjk__minkowski_set_scale
@@ -82,6 +83,7 @@ static void apply_factor(agjk__minkowski *md, double f) {
     md->margin_a *= f;
     md->margin_b *= f;
     md->margin *= f;
+    md->noise_floor *= f;
     agjk__minkowski_grow(md, md->magnitude * f);
     set_limits(md);
 }

@@ -32,6 +32,9 @@ typedef struct agjk__minkowski {
      * translation_size). Updated only when a support point is larger. */
     double magnitude;
     double noise;
+    /* A lower bound on noise set by a warm start whose cached points lie
+     * farther from the shapes than the rounding of fresh ones (cache.c). */
+    double noise_floor;
     /* The common path of agjk__minkowski_support needs no rescue when the raw
      * support points' 1-norms add up to at most raw_limit (caller's units) and the
      * direction's max |d_i| lies in [direction_min, AGJK__DIRECTION_MAX]. */
@@ -91,7 +94,8 @@ static inline double agjk__minkowski_set_scale(agjk__minkowski *md) {
 /* Records a larger magnitude (solver units) and the noise that follows. */
 static inline void agjk__minkowski_grow(agjk__minkowski *md, double magnitude) {
     md->magnitude = magnitude;
-    md->noise = 4.0 * DBL_EPSILON * (magnitude + md->translation_size);
+    double noise = 4.0 * DBL_EPSILON * (magnitude + md->translation_size);
+    md->noise = noise > md->noise_floor ? noise : md->noise_floor;
 }
 
 /* s = argmin_{s in D} <d, s> = S_A(-d) - S_B(d) (paper eq. 7-8), d in A's frame,

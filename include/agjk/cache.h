@@ -72,14 +72,20 @@ typedef struct agjk_cache {
      *  the plane that certified the answer) in A's local frame, length units,
      *  and the one of the query before (zero if none). */
     agjk_vec3 direction, direction_prev;
-    /** Check value of `count` and the simplex points, written by every cached
-     *  query that changes them: a cache whose simplex does not match it
+    /** Check value of `count`, the simplex points and `point_error`, written
+     *  by every cached query that changes them: a cache whose simplex does not match it
      *  (garbage, or edited by hand) is ignored. The pair's pointers are
      *  compared with the query's shapes; the directions, hints and flags only
      *  choose where the query starts, and are checked for range. */
     uint64_t check;
+    /** How far the cached points of B may lie from B, length units: they are
+     *  recovered in B's local frame from the query's points, which rounds,
+     *  more so far from the origin, and under a rotation orthonormal only to
+     *  within its tolerance. The next query widens its rounding allowances to
+     *  cover it. Covered by the check value. */
+    double point_error;
     /** Reserved for later versions; written as zero. */
-    double reserved[4];
+    double reserved[3];
 } agjk_cache;
 
 /** Empties `cache` (a cold start next time). `struct_size` must be

@@ -281,9 +281,18 @@ START_TEST(stale) {
             while (make_pair(&rng, kind, &p) != 0) TU_CHECK(++tries < 100);
             agjk_cache cache;
             agjk_result cold, warm;
-            /* filled at a random other pose, overlapping or far */
+            /* filled at a random other pose: overlapping, far, very far (1e10
+             * sizes: the cached points' recovery in B's frame then rounds by
+             * far more than B's thickness), or under a rotation orthonormal
+             * only to 5e-7 per entry (accepted: R^T then inverts it only
+             * that well) */
             pair far = p;
-            far.pb = tu_random_pose(&rng, trial % 2 ? 0.05 : 3.0);
+            int variant = trial % 4;
+            far.pb = tu_random_pose(&rng, variant == 1 ? 0.05 : 3.0);
+            if (variant == 2) far.pb.translation = tu_scale(far.pb.translation, 1e10 * p.size);
+            if (variant == 3)
+                for (int r = 0; r < 3; r++)
+                    for (int c = 0; c < 3; c++) far.pb.rotation[r][c] *= 1.0 + (r == c ? 5e-7 : -3e-7);
             fill(&far, &cache);
             for (int flat = 0; flat < 2; flat++) {
                 agjk_cache c = cache;
