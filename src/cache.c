@@ -207,13 +207,15 @@ int agjk__cache_load(const agjk_cache *cache, const agjk_shape *a, const agjk_sh
      * simplex start their place under md's poses (A's frame is A's local
      * frame; B's points move with the relative pose). */
     check_lanes h = check_begin(cache);
-    double size = 0.0;
+    double size = 0.0, magnitude = 0.0;
     agjk_vec3 w[4];
     for (int i = 0; i < n; ++i) {
         agjk_vec3 pa = cache->point_a[i], pb = cache->point_b[i];
         h = mix_vec(mix_vec(h, pa), pb);
         if (!simplex) continue;
         size += v3_norm1(pa) + v3_norm1(pb);
+        double m = v3_maxabs(pa) + v3_maxabs(pb);
+        if (m > magnitude) magnitude = m;
         agjk__vertex *v = &in->warm[i];
         v->a = pa;
         v->b = v3_add(m3_mul(&md->rotation[0][0], pb), md->translation);
@@ -243,7 +245,10 @@ int agjk__cache_load(const agjk_cache *cache, const agjk_shape *a, const agjk_sh
         return load_direction(cache, in, has_direction);
     }
     md->noise_floor = cache->point_error;
-    if (md->noise < md->noise_floor) md->noise = md->noise_floor;
+    /* The cached points are points of this query: their size counts in its
+     * rounding scale (and in the scale of its units, agjk__minkowski_set_scale)
+     * as that of any support point (the measure of agjk__minkowski_support). */
+    agjk__minkowski_grow(md, magnitude > md->magnitude ? magnitude : md->magnitude);
     agjk_vec3 x;
     unsigned mask = project_interior(w, n, in->warm_lambda, &x);
     if (!mask) mask = agjk__simplex_project_gjk(w, n, in->warm_lambda, &x);
