@@ -356,13 +356,20 @@ static int insert(epa_state *st, const agjk__vertex *s, int f0, int hint_a, int 
      * faces; slot[0] and slot[nh + 1] repeat the ends (the cycle closes). */
     int slot[MAX_FACES + 2];
     /* Horizon edge i runs from hu[i] to hu[i + 1] (kept face across: ho[i]);
-     * a simple cycle visits each vertex at most once: MAX_VERTICES edges. */
+     * a simple cycle visits each vertex at most once: MAX_VERTICES edges.
+     * New face i is the triangle s u_i u_{i+1}, of plane hn, hd, he [i]. */
     int hu[MAX_VERTICES + 1], ho[MAX_VERTICES];
-    agjk_vec3 hw[MAX_VERTICES + 1], hn[MAX_VERTICES];
-    double hl[MAX_VERTICES + 1], hr[MAX_VERTICES + 1], hd[MAX_VERTICES], he[MAX_VERTICES];
+    agjk_vec3 hn[MAX_VERTICES];
+    double hd[MAX_VERTICES], he[MAX_VERTICES];
+    /* The edges from s to the first and to the latest horizon vertex, their
+     * squared lengths and the max |w_i| of their ends: each face's plane is
+     * computed when the walk reaches its second horizon vertex. */
+    agjk_vec3 w_first = {0.0, 0.0, 0.0}, w_last = w_first;
+    double l_first = 0.0, l_last = 0.0, r_first = 0.0, r_last = 0.0;
     int depth = 0, nrem = 0, nh = 0, end = -1;
     if (st->nv >= MAX_VERTICES) return 0;
     const agjk_vec3 w = s->w;
+    const double wmax = v3_maxabs(w);
     const int stamp = ++st->stamp;
     st->f[f0].mark = stamp;
     slot[++nrem] = f0;
@@ -380,35 +387,41 @@ static int insert(epa_state *st, const agjk__vertex *s, int f0, int hint_a, int 
             slot[++nrem] = gi;
             walk[depth++] = g->adj[next3[next3[ge]]];
             walk[depth++] = g->adj[next3[ge]];
-        } else {
-            /* A horizon edge, from g's v[ge + 1] to its v[ge] (g sees it the
-             * other way round): in walk order it must start where the last
-             * ended. */
-            int u = g->v[next3[ge]];
-            if (nh == MAX_VERTICES || (nh > 0 && u != end) || st->vmark[u] == stamp) return 0;
-            st->vmark[u] = stamp;
-            end = g->v[ge];
-            hu[nh] = u;
-            ho[nh] = code;
-            hw[nh] = v3_sub(st->v[u].w, w);
-            hl[nh] = v3_norm2(hw[nh]);
-            hr[nh] = st->vmax[u];
-            ++nh;
+            continue;
         }
-    }
-    /* The horizon must close, the store must hold the new faces, and they
-     * need normals. Face i is the triangle s u_i u_{i+1}: its edges from s,
-     * hw[i] and hw[i + 1], are shared with its neighbours. */
-    if (nh < 3 || end != hu[0] || nh > nrem + st->nfree + (MAX_FACES - st->nf)) return 0;
-    hu[nh] = hu[0];
-    hw[nh] = hw[0];
-    hl[nh] = hl[0];
-    hr[nh] = hr[0];
-    const double wmax = v3_maxabs(w);
-    for (int i = 0; i < nh; ++i)
-        if (!face_plane(w, hw[i], hw[i + 1], hl[i], hl[i + 1], max3(hr[i], hr[i + 1], wmax),
-                        &hn[i], &hd[i], &he[i]))
+        /* A horizon edge, from g's v[ge + 1] to its v[ge] (g sees it the
+         * other way round): in walk order it must start where the last
+         * ended. A vertex met twice would pinch the cycle (distinct vertices
+         * also bound nh by MAX_VERTICES). */
+        int u = g->v[next3[ge]];
+        if ((nh > 0 && u != end) || st->vmark[u] == stamp) return 0;
+        st->vmark[u] = stamp;
+        end = g->v[ge];
+        agjk_vec3 wu = v3_sub(st->v[u].w, w);
+        double lu = v3_norm2(wu), ru = st->vmax[u];
+        if (nh == 0) {
+            w_first = wu;
+            l_first = lu;
+            r_first = ru;
+        } else if (!face_plane(w, w_last, wu, l_last, lu, max3(r_last, ru, wmax), &hn[nh - 1],
+                               &hd[nh - 1], &he[nh - 1])) {
             return 0;
+        }
+        hu[nh] = u;
+        ho[nh] = code;
+        w_last = wu;
+        l_last = lu;
+        r_last = ru;
+        ++nh;
+    }
+    /* The horizon must close, the store must hold the new faces, and the
+     * last one, from the last horizon vertex back to the first, needs a
+     * normal too. */
+    if (nh < 3 || end != hu[0] || nh > nrem + st->nfree + (MAX_FACES - st->nf)) return 0;
+    if (!face_plane(w, w_last, w_first, l_last, l_first, max3(r_last, r_first, wmax),
+                    &hn[nh - 1], &hd[nh - 1], &he[nh - 1]))
+        return 0;
+    hu[nh] = hu[0];
     /* Commit: the new faces take the removed faces' slots first. */
     int si = st->nv++;
     if (s != &st->v[si]) st->v[si] = *s;
