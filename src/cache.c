@@ -241,7 +241,6 @@ int agjk__cache_load(const agjk_cache *cache, const agjk_shape *a, const agjk_sh
      * would make this query less precise than a cold one: then only its
      * direction serves. */
     if (cache->point_error > 64.0 * DBL_EPSILON * (md->translation_size + size)) {
-        in->warm_count = 0;
         return load_direction(cache, in, has_direction);
     }
     md->noise_floor = cache->point_error;

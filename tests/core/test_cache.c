@@ -87,27 +87,22 @@ static int finite_result(const agjk_result *r) {
 
 /* The cached answer against the reference and the cold answer. */
 static void check_answer(const char *what, const pair *p, const agjk_pose *pa, const agjk_pose *pb,
-                         const agjk_result *cold, const agjk_result *warm, int boolean, int fw,
-                         int near_contact) {
+                         const agjk_result *cold, const agjk_result *warm, int boolean, int fw) {
     ref_result ref;
     TU_ENSURE(finite_result(warm), "%s: NaN or Inf in the result", what);
     /* Plain Frank-Wolfe may reach the iteration cap on polytopes, cold or not,
      * and keeps no simplex to certify an overlap with. Every other method goes
      * on past the tolerance until the sign is decided (solver.c,
      * sign_pending, within a budget of iterations), so that cold and warm
-     * queries agree, except on shapes within the square root of the
-     * tolerance of contact (near_contact), where the budget may run out and
-     * "contact within tolerance" is an honest answer. */
+     * queries agree, except within the tolerance's scale of contact (the
+     * default 1e-8 on squared lengths: 1e-4), where the budget may run out
+     * and "contact within tolerance" is an honest answer: judged, when the
+     * statuses differ, by an independent bracket on the signed distance. */
     int contact = warm->status == AGJK_STATUS_CONTACT_WITHIN_TOLERANCE ||
                   cold->status == AGJK_STATUS_CONTACT_WITHIN_TOLERANCE;
-    int undecided = (near_contact && contact) ||
-                    (fw && (contact || warm->status == AGJK_STATUS_NOT_CONVERGED ||
-                            cold->status == AGJK_STATUS_NOT_CONVERGED));
+    int undecided = fw && (contact || warm->status == AGJK_STATUS_NOT_CONVERGED ||
+                           cold->status == AGJK_STATUS_NOT_CONVERGED);
     if (contact && !undecided && warm->status != cold->status) {
-        /* A trajectory step may land within rounding of contact (the slide
-         * passes through it): judged by an independent bracket on the signed
-         * distance, "contact" is then allowed within the tolerance's scale
-         * (the default 1e-8 on squared lengths: 1e-4). */
         ref_signed_bracket br;
         ref_signed_distance_bb(&p->ra, pa, &p->rb, pb, 1e-7L * p->size, 20000, &br);
         undecided = br.lower <= 1e-4L && br.upper >= -1e-4L;
@@ -166,7 +161,7 @@ START_TEST(trajectories) {
                         agjk_distance_cached(&p.a, &pa, &p.b, &pb, &o, &cache, &warm);
                     }
                     check_answer(what, &p, &pa, &pb, &cold, &warm, boolean,
-                                 o.method == AGJK_METHOD_FRANK_WOLFE, 0);
+                                 o.method == AGJK_METHOD_FRANK_WOLFE);
                     TU_ENSURE(cache.struct_size == sizeof cache && cache.count >= 0 &&
                                   cache.count <= 4 &&
                                   (cache.count >= 1 || tu_norm(cache.direction) > 0.0),
@@ -309,12 +304,12 @@ START_TEST(stale) {
                 if (flat) c.flags |= AGJK_CACHE_FLAT; /* force the simplex path */
                 agjk_distance(&p.a, &p.pa, &p.b, &p.pb, NULL, &cold);
                 agjk_distance_cached(&p.a, &p.pa, &p.b, &p.pb, NULL, &c, &warm);
-                check_answer("stale", &p, &p.pa, &p.pb, &cold, &warm, 0, 0, 0);
+                check_answer("stale", &p, &p.pa, &p.pb, &cold, &warm, 0, 0);
                 agjk_collide(&p.a, &p.pa, &p.b, &p.pb, NULL, &cold);
                 c = cache;
                 if (flat) c.flags |= AGJK_CACHE_FLAT;
                 agjk_collide_cached(&p.a, &p.pa, &p.b, &p.pb, NULL, &c, &warm);
-                check_answer("stale collide", &p, &p.pa, &p.pb, &cold, &warm, 1, 0, 0);
+                check_answer("stale collide", &p, &p.pa, &p.pb, &cold, &warm, 1, 0);
             }
             /* Cached points moved off the shapes by hand (they could fake an
              * overlap): the check value no longer matches, the cache is ignored. */
@@ -339,7 +334,7 @@ START_TEST(stale) {
                 TU_CHECK(ref_make_agjk(&p.ra, &p.a) == AGJK_STATUS_OK);
                 agjk_distance(&p.a, &p.pa, &p.b, &p.pb, NULL, &cold);
                 agjk_distance_cached(&p.a, &p.pa, &p.b, &p.pb, NULL, &cache, &warm);
-                check_answer("box shrunk in place", &p, &p.pa, &p.pb, &cold, &warm, 0, 0, 0);
+                check_answer("box shrunk in place", &p, &p.pa, &p.pb, &cold, &warm, 0, 0);
                 flat_cases += (cache.flags & AGJK_CACHE_FLAT) != 0;
             }
         }
@@ -400,8 +395,7 @@ START_TEST(leaving_the_cached_simplex) {
                 agjk_distance_cached(&p.a, &p.pa, &p.b, &pb, NULL, &cache, &warm);
                 snprintf(what, sizeof what, "kind %d trial %d step %d (offset %.3g)", kind,
                          trial, i, e);
-                /* The default tolerance, 1e-8 on squared distances: 1e-4 on lengths. */
-                check_answer(what, &p, &p.pa, &pb, &cold, &warm, 0, 0, fabs(e) * p.size <= 1e-4);
+                check_answer(what, &p, &p.pa, &pb, &cold, &warm, 0, 0);
                 if (warm.status == AGJK_STATUS_INTERSECTING) was_enclosed = 1;
                 else if (was_enclosed) ++enclosed_then_not, was_enclosed = 0;
             }

@@ -168,6 +168,15 @@ static inline double fz_extent(const agjk_shape *s) {
     return e;
 }
 
+/* The size of a problem, for rounding slacks: translations, extents and
+ * margins of both shapes. */
+static inline double fz_scale(const agjk_shape *a, const agjk_pose *pa, const agjk_shape *b,
+                              const agjk_pose *pb) {
+    return fabs(pa->translation.x) + fabs(pa->translation.y) + fabs(pa->translation.z) +
+           fabs(pb->translation.x) + fabs(pb->translation.y) + fabs(pb->translation.z) +
+           fz_extent(a) + fz_extent(b) + a->margin + b->margin;
+}
+
 /* Runs both queries on one input and checks every invariant that holds
  * whatever the input: documented status, result equal to the return value,
  * no NaN (no Inf either for finite, tame inputs), status semantics, and that
@@ -220,9 +229,7 @@ static inline void fz_check_pair(const agjk_shape *a, const agjk_pose *pa, const
          * into a shape's frame moves h by ~eps x the shape's extent, so the
          * slack scales with the extents (a 1e48 vertex makes any world-frame
          * plane uncertain by ~1e32), not with the distance. */
-        double scale = fabs(pa->translation.x) + fabs(pa->translation.y) + fabs(pa->translation.z) +
-                       fabs(pb->translation.x) + fabs(pb->translation.y) + fabs(pb->translation.z) +
-                       fz_extent(a) + fz_extent(b) + a->margin + b->margin;
+        double scale = fz_scale(a, pa, b, pb);
         FUZZ_CHECK(ha + hb <= 1e-12 * scale, "collide SEPARATED but plane overlaps by %g (scale %g)",
                    ha + hb, scale);
     }

@@ -131,9 +131,7 @@ static void check_signed(const agjk_shape *a, const agjk_pose *pa, const agjk_sh
     if (ss == AGJK_STATUS_SEPARATED) FUZZ_CHECK(r.lower > 0, "SEPARATED with lower %g", r.lower);
     if (ss == AGJK_STATUS_INTERSECTING) FUZZ_CHECK(r.upper < 0, "INTERSECTING with upper %g", r.upper);
     if (!exact || !a || !b) return;
-    double scale = fabs(pa->translation.x) + fabs(pa->translation.y) + fabs(pa->translation.z) +
-                   fabs(pb->translation.x) + fabs(pb->translation.y) + fabs(pb->translation.z) +
-                   fz_extent(a) + fz_extent(b) + a->margin + b->margin;
+    double scale = fz_scale(a, pa, b, pb);
     /* plus a few subnormal ulps: the world-frame evaluation below rounds
      * absolutely there */
     double slack = 1e-12 * scale + 16 * 4.9406564584124654e-324;
@@ -197,9 +195,7 @@ static void check_cached(const agjk_shape *a, const agjk_pose *pa, const agjk_sh
                      (sw == AGJK_STATUS_INTERSECTING && sc == AGJK_STATUS_SEPARATED)),
                    "cached says %s, cold says %s", agjk_status_string(sw), agjk_status_string(sc));
         if (boolean) continue;
-        double scale = fabs(pa->translation.x) + fabs(pa->translation.y) + fabs(pa->translation.z) +
-                       fabs(pb->translation.x) + fabs(pb->translation.y) + fabs(pb->translation.z) +
-                       fz_extent(a) + fz_extent(b) + a->margin + b->margin;
+        double scale = fz_scale(a, pa, b, pb);
         double slack = 1e-12 * scale + 16 * 4.9406564584124654e-324;
         FUZZ_CHECK(warm.distance + slack >= cold.distance - cold.bound &&
                        cold.distance + slack >= warm.distance - warm.bound,
