@@ -343,11 +343,12 @@ void agjk__cache_save(agjk_cache *cache, const agjk_shape *a, const agjk_shape *
      * query on flat shapes) came from the local points at that place in the
      * cache, which stay (exact, and no rotation). When all of them stayed,
      * with the count, so does the check value load verified. */
+    cache->count = n;
+    if (out->warm_kept) return; /* (inv is 1 then: x_0 was used as given) */
     int kept = inv == 1.0 ? in->warm_count : 0;
     unsigned same = 0;
     for (int i = 0; i < n && i < kept; ++i)
         if (same_vertex(&out->simplex[i], &in->warm[i])) same |= 1u << i;
-    cache->count = n;
     if (kept > 0 && n == kept && same == (1u << n) - 1u) return;
     /* Points kept keep their bound; the others get the bound of their
      * recovery (point_error_of). */

@@ -551,12 +551,23 @@ static int warm_seed(const agjk__solve_input *in, solver *sv) {
     for (int i = 0; i < in->warm_count; ++i) {
         if (!(in->warm_mask & (1u << i))) continue;
         sv->w[kept] = in->warm[i].w;
-        sv->a[kept] = in->warm[i].a;
-        sv->b[kept] = in->warm[i].b;
         sv->lambda[kept] = in->warm_lambda[i];
         ++kept;
     }
     return kept;
+}
+
+/* The points of A and B of the vertices warm_seed kept: only when the query
+ * goes on past warm_certified, or its answer needs them (most warm queries on
+ * flat shapes need neither). */
+static void warm_seed_points(const agjk__solve_input *in, solver *sv) {
+    int kept = 0;
+    for (int i = 0; i < in->warm_count; ++i) {
+        if (!(in->warm_mask & (1u << i))) continue;
+        sv->a[kept] = in->warm[i].a;
+        sv->b[kept] = in->warm[i].b;
+        ++kept;
+    }
 }
 
 /* Warm start: 0 when the plane of the support s found in direction d cuts off
@@ -625,7 +636,7 @@ static void finish(const solver *sv, agjk__solve_output *out) {
     out->b = b;
     /* The final active set, for EPA and the cache (a and b with keep_points). */
     int n = in->want_simplex ? sv->count : 0;
-    for (int i = 0; i < n; ++i) {
+    for (int i = 0; i < n && !out->warm_kept; ++i) {
         out->simplex[i].w = sv->w[i];
         out->simplex[i].a = in->keep_points ? sv->a[i] : v3(0.0, 0.0, 0.0);
         out->simplex[i].b = in->keep_points ? sv->b[i] : v3(0.0, 0.0, 0.0);
@@ -668,6 +679,7 @@ void agjk__solve(agjk__minkowski *md, const agjk__solve_input *in, agjk__solve_o
     out->direction = v3(0.0, 0.0, 0.0);
     out->simplex_count = 0;
     out->flat = 0;
+    out->warm_kept = 0;
 
     /* Iteration 0's support, and its tests, before any other set-up: distant
      * shapes in Boolean mode end here (a separating plane at once, as in
@@ -703,9 +715,15 @@ void agjk__solve(agjk__minkowski *md, const agjk__solve_input *in, agjk__solve_o
         warm = 1;
         warm_enclosed = sv.count == 4;
         if (warm_certified(&sv, d0, &s, out)) {
+            /* The cached simplex, whole and unmoved, is the answer's: the
+             * cache keeps it as it is (no copy, cache.c). */
+            out->warm_kept = sv.count == in->warm_count;
+            if (in->want_witness || (in->want_simplex && !out->warm_kept))
+                warm_seed_points(in, &sv);
             finish(&sv, out);
             return;
         }
+        if (in->keep_points) warm_seed_points(in, &sv);
     }
     /* x_0 in solver units: d_{-1} = s_{-1} = x_0. */
     agjk__momentum_init(&sv.m, in->method, d0, in->x0_given);

@@ -112,6 +112,10 @@ typedef struct agjk__solve_output {
      * keep_points): EPA starts from it, the cache keeps it. */
     agjk__vertex simplex[4];
     int simplex_count;
+    /* The final active set is the warm start's, whole and in its order
+     * (in->warm[0 .. warm_count - 1], simplex_count of them): then `simplex`
+     * is not written. */
+    int warm_kept;
     int flat;            /* a point of A or B came back (flat faces), for the cache */
 } agjk__solve_output;
 
