@@ -337,6 +337,11 @@ void agjk__cache_save(agjk_cache *cache, const agjk_shape *a, const agjk_shape *
         cache->direction = v3_scale(out->direction, f);
     }
     int n = out->simplex_count < 0 ? 0 : out->simplex_count > 4 ? 4 : out->simplex_count;
+    /* Curved shapes (no vertex met twice): unless it encloses the origin, the
+     * next query starts from the direction alone (agjk__cache_load), so the
+     * simplex is not kept and its points are not recovered (a tenth of a
+     * warm query on ellipsoids). */
+    if (!(cache->flags & AGJK_CACHE_FLAT) && n < 4 && v3_maxabs(cache->direction) > 0.0) n = 0;
     /* Back to B's local frame: R^T (b - t) (rounding of a few ulps, within the
      * tolerance warm_consistent allows, solver.c); but a vertex the solver
      * kept from the warm start in its place (the usual end of a coherent
@@ -344,7 +349,7 @@ void agjk__cache_save(agjk_cache *cache, const agjk_shape *a, const agjk_shape *
      * cache, which stay (exact, and no rotation). When all of them stayed,
      * with the count, so does the check value load verified. */
     cache->count = n;
-    if (out->warm_kept) return; /* (inv is 1 then: x_0 was used as given) */
+    if (n > 0 && out->warm_kept) return; /* (inv is 1 then: x_0 was used as given) */
     int kept = inv == 1.0 ? in->warm_count : 0;
     unsigned same = 0;
     for (int i = 0; i < n && i < kept; ++i)

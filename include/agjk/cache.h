@@ -56,7 +56,10 @@ typedef struct agjk_cache {
     /** sizeof(agjk_cache) as the caller compiled it, set by agjk_cache_init()
      *  and by every cached query. 0 (a zeroed cache) is accepted as empty. */
     uint32_t struct_size;
-    /** Number of cached simplex vertices, 0 to 4; 0: cold start. */
+    /** Number of cached simplex vertices, 0 to 4. 0: no simplex; the next query
+     *  starts from `direction` if it is non-zero, else cold. Without
+     *  AGJK_CACHE_FLAT only a simplex that encloses the origin is kept (curved
+     *  shapes start from the direction). */
     int32_t count;
     /** Support hints of A and B at the end of the last query. */
     int32_t hint_a, hint_b;
