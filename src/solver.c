@@ -754,6 +754,7 @@ void agjk__solve(agjk__minkowski *md, const agjk__solve_input *in, agjk__solve_o
                 if (shallow_faces(sv.w, 9.0 * md->noise) == 0 ||
                     md->margin > 13.0 * md->noise) {
                     out->outcome = AGJK__INTERSECTING;
+                    out->warm_kept = 1; /* the cached tetrahedron, as it was */
                     break;
                 }
                 /* Not deep enough to certify: on cold from this support. */
