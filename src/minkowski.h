@@ -98,6 +98,14 @@ static inline void agjk__minkowski_grow(agjk__minkowski *md, double magnitude) {
     md->noise = noise > md->noise_floor ? noise : md->noise_floor;
 }
 
+/* The smallest positive length in the caller's units (the least subnormal),
+ * in solver units: a lower bound on a distance must exceed a few of these to
+ * stay positive once scaled back (a problem 1e-312 across, scaled up by the
+ * largest factor, 2^1000, is still 1e-11 in solver units). */
+static inline double agjk__minkowski_caller_granule(const agjk__minkowski *md) {
+    return 0x1p-1074 * md->scale;
+}
+
 /* s = argmin_{s in D} <d, s> = S_A(-d) - S_B(d) (paper eq. 7-8), d in A's frame,
  * non-zero and finite, with the points of A and B it came from. */
 static AGJK__ALWAYS_INLINE void agjk__minkowski_support(agjk__minkowski *md, agjk_vec3 d,

@@ -157,8 +157,12 @@ static inline agjk__outcome gap_verdict(const solver *sv, double g, double xs2) 
 /* Whether a gap g at x certifies separation: the lower bound ||x|| -
  * g / (2 ||x||), less the rounding, above the margins (as query.c reads it). */
 static int gap_separates(const solver *sv, double g) {
-    /* ||x|| - g / (2 ||x||) > r  <=>  2 ||x||^2 - g > 2 ||x|| r, squared (r >= 0). */
-    double r = sv->md->margin + 2.0 * sv->md->noise, t = 2.0 * sv->x2 - g;
+    /* ||x|| - g / (2 ||x||) > r  <=>  2 ||x||^2 - g > 2 ||x|| r, squared (r >= 0).
+     * A bound that would vanish in the caller's units (a tolerance that is
+     * huge for a tiny problem, met by a plane far from the best, found by
+     * fuzzing) decides nothing: the plain steps of sign_pending tighten it. */
+    double r = sv->md->margin + 2.0 * sv->md->noise + 4.0 * agjk__minkowski_caller_granule(sv->md),
+           t = 2.0 * sv->x2 - g;
     return t > 0.0 && t * t > 4.0 * sv->x2 * r * r;
 }
 
