@@ -613,7 +613,7 @@ void agjk__epa(agjk__minkowski *md, const agjk__epa_input *in, agjk__epa_output 
                 break;
             }
         }
-        if (best >= 0) face_witness(&st, best, out);
+        if (best >= 0 && in->want_witness) face_witness(&st, best, out);
         if (!(st.upper < INFINITY) && best >= 0) {
             /* No support value yet (cap before the first call): take one. */
             double h;

@@ -28,6 +28,7 @@ typedef struct agjk__epa_input {
      * solver units: depth >= -it. */
     double core_distance_upper;
     int max_iterations;
+    int want_witness;            /* compute the deepest points a, b (else has_witness 0) */
 } agjk__epa_input;
 
 typedef struct agjk__epa_output {
@@ -38,7 +39,7 @@ typedef struct agjk__epa_output {
     double lower, upper;
     double estimate;      /* support value in `normal`, within [lower, upper] */
     agjk_vec3 normal;     /* unit, A's frame: the direction of `estimate` */
-    int has_witness;      /* a, b below are set */
+    int has_witness;      /* a, b below are set (only when asked: want_witness) */
     agjk_vec3 a, b;       /* deepest core points of A and B, A's frame, solver units */
     int iterations;
     int support_calls;

@@ -467,6 +467,18 @@ START_TEST(witness_points) {
         agjk_options o = agjk_default_options();
         o.tolerance = 1e-16;
         agjk_signed_result r = signed_query(&a, &pa, &b, &pb, &o);
+        /* Without witness points asked: the same answer, bit for bit, and
+         * zero witnesses (neither GJK nor EPA computes them then). */
+        agjk_options bare = o;
+        bare.compute = AGJK_COMPUTE_DISTANCE;
+        agjk_signed_result rb = signed_query(&a, &pa, &b, &pb, &bare);
+        TU_ENSURE(rb.status == r.status && rb.signed_distance == r.signed_distance &&
+                      rb.lower == r.lower && rb.upper == r.upper &&
+                      rb.normal.x == r.normal.x && rb.normal.y == r.normal.y &&
+                      rb.normal.z == r.normal.z && rb.epa_iterations == r.epa_iterations,
+                  "pair %d: another answer without witness points", i);
+        TU_ENSURE(tu_norm(rb.witness_a) == 0.0 && tu_norm(rb.witness_b) == 0.0,
+                  "pair %d: witness points not asked for", i);
         if (r.status != AGJK_STATUS_INTERSECTING) continue;
         double tol = 1e-6 * size;
         agjk_vec3 diff = tu_sub(r.witness_a, r.witness_b);
