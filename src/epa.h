@@ -123,9 +123,24 @@ static inline int agjk__epa_scan_nearest(agjk__epa_scan *sc, const double *key, 
 
 /* Width the interval on the signed distance must reach (solver units), given
  * the interval [s_lo, s_hi] on the signed distance with margins (solver units)
- * and the tolerance; the floating-point floor raises it in absolute mode. */
-double agjk__epa_target(int relative, double tolerance, double scale, double s_lo,
-                        double s_hi, double floor);
+ * and the tolerance; the floating-point floor raises it in absolute mode.
+ * Inline: EPA asks at every iteration the cheaper cap of width_met leaves open. */
+static inline double agjk__epa_target(int relative, double tolerance, double scale, double s_lo,
+                                       double s_hi, double floor) {
+    double lo = fabs(s_lo), hi = fabs(s_hi);
+    double big = lo > hi ? lo : hi;
+    if (relative) {
+        /* The smallest |s| the interval allows (0 when it holds 0). */
+        double small = (s_lo > 0.0 || s_hi < 0.0) ? (lo < hi ? lo : hi) : 0.0;
+        return 0.5 * tolerance * small;
+    }
+    /* What agjk_distance certifies at distance |s| with gap <= tolerance:
+     * min(sqrt(g), g / (2 |s|)); the largest |s| of the interval is the safe one. */
+    double tol = tolerance * scale * scale;
+    double target = sqrt(tol);
+    if (big > 0.0 && tol / (2.0 * big) < target) target = tol / (2.0 * big);
+    return target > floor ? target : floor;
+}
 
 /* Floating-point floor of the interval width for the problem md (solver units). */
 double agjk__epa_floor(const agjk__minkowski *md);
