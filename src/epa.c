@@ -373,17 +373,16 @@ static int tetrahedron_start(epa_state *st, const agjk__vertex *sx) {
     agjk_vec3 e01 = swap ? e2 : e1, e02 = swap ? e1 : e2;
     double l01 = swap ? l2 : l1, l02 = swap ? l1 : l2;
     double r0 = v3_maxabs(p0), r1 = v3_maxabs(w1), r2 = v3_maxabs(w2), r3 = v3_maxabs(w3);
-    for (int i = 0; i < 4; ++i) {
-        st->vmark[i] = 0;
-        st->hint_a[i] = st->md->hint_a; /* as tetrahedron_faces */
-        st->hint_b[i] = st->md->hint_b;
-        agjk__epa_scan_fresh(&st->scan, i);
-        st->f[i].mark = 0;
-    }
+    const int ha = st->md->hint_a, hb = st->md->hint_b; /* as tetrahedron_faces */
     st->vmax[0] = r0;
     st->vmax[1] = r1;
     st->vmax[2] = r2;
     st->vmax[3] = r3;
+    st->vmark[0] = st->vmark[1] = st->vmark[2] = st->vmark[3] = 0;
+    st->hint_a[0] = st->hint_a[1] = st->hint_a[2] = st->hint_a[3] = ha;
+    st->hint_b[0] = st->hint_b[1] = st->hint_b[2] = st->hint_b[3] = hb;
+    st->f[0].mark = st->f[1].mark = st->f[2].mark = st->f[3].mark = 0;
+    for (int i = 0; i < 4; ++i) agjk__epa_scan_fresh(&st->scan, i);
     st->nf = 4;
     st->nfree = 0;
     /* Each face's plane from the same edges as tetrahedron_faces (tetra_tri:
