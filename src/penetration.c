@@ -7,7 +7,7 @@
 #include "epa.h"
 #include "query_setup.h"
 
-static agjk_vec3 to_world(const agjk_pose *pose, agjk_vec3 p) {
+static AGJK__ALWAYS_INLINE agjk_vec3 to_world(const agjk_pose *pose, agjk_vec3 p) {
     return v3_add(m3_mul(&pose->rotation[0][0], p), pose->translation);
 }
 
