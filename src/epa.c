@@ -624,6 +624,9 @@ void agjk__epa(agjk__minkowski *md, const agjk__epa_input *in, agjk__epa_output 
     out->converged = 0;
 
     int flat = 0;
+    /* width_met's verdict on the final bounds when the loop ended on one
+     * (nothing changes them afterwards then), -1 when still to be asked. */
+    int met = -1;
     int ok = (in->count == 4 && tetrahedron_start(&st, in->simplex)) ||
              (blow_up(&st, in->simplex, in->count, &flat) && tetrahedron_faces(&st));
     if (md->bad_support) {
@@ -649,6 +652,7 @@ void agjk__epa(agjk__minkowski *md, const agjk__epa_input *in, agjk__epa_output 
             if (proved > st.lower) st.lower = proved;
             if (width_met(&st, in, agjk__epa_noise(md), agjk__epa_floor(md))) {
                 out->outcome = AGJK__EPA_CONVERGED;
+                met = 1;
                 break;
             }
             if (k >= in->max_iterations) break;
@@ -666,8 +670,8 @@ void agjk__epa(agjk__minkowski *md, const agjk__epa_input *in, agjk__epa_output 
             if (!(h - f->dist > f->err)) { /* sees(f, s->w) */
                 /* The face lies on D's boundary to rounding: the bounds are as
                  * tight as this polytope can make them. */
-                out->outcome = width_met(&st, in, agjk__epa_noise(md), agjk__epa_floor(md))
-                                   ? AGJK__EPA_CONVERGED : AGJK__EPA_NO_PROGRESS;
+                met = width_met(&st, in, agjk__epa_noise(md), agjk__epa_floor(md));
+                out->outcome = met ? AGJK__EPA_CONVERGED : AGJK__EPA_NO_PROGRESS;
                 break;
             }
             if (st.nv >= MAX_VERTICES) {
@@ -684,6 +688,7 @@ void agjk__epa(agjk__minkowski *md, const agjk__epa_input *in, agjk__epa_output 
             /* No support value yet (cap before the first call): take one. */
             double h;
             if (!support(&st, st.f[best].n, &st.v[st.nv], &h)) out->outcome = AGJK__EPA_BAD_SUPPORT;
+            met = -1;
         }
     }
     /* Twice the solver's noise scale on each end: a support value and a face
@@ -705,7 +710,7 @@ void agjk__epa(agjk__minkowski *md, const agjk__epa_input *in, agjk__epa_output 
     if (out->estimate < out->lower) out->estimate = out->lower;
     out->normal = st.upper_n;
     out->converged = out->outcome != AGJK__EPA_BAD_SUPPORT &&
-                     width_met(&st, in, agjk__epa_noise(md), agjk__epa_floor(md));
+                     (met >= 0 ? met : width_met(&st, in, agjk__epa_noise(md), agjk__epa_floor(md)));
     if (out->converged && out->outcome != AGJK__EPA_FLAT) out->outcome = AGJK__EPA_CONVERGED;
     out->support_calls = st.support_calls;
 }
