@@ -170,8 +170,8 @@ static double max3(double a, double b, double c) {
 }
 
 /* Writes face fi (vertices a b c, plane n dist err) and its key. */
-static AGJK__ALWAYS_INLINE void set_face(epa_state *st, int fi, int a, int b, int c, agjk_vec3 n, double dist,
-                     double err) {
+static AGJK__ALWAYS_INLINE void set_face(epa_state *st, int fi, int a, int b, int c,
+                                         agjk_vec3 n, double dist, double err) {
     epa_face *f = &st->f[fi];
     f->v[0] = a;
     f->v[1] = b;
@@ -388,7 +388,8 @@ static int tetrahedron_start(epa_state *st, const agjk__vertex *sx) {
     /* Each face's plane from the same edges as tetrahedron_faces (tetra_tri:
      * from its first vertex to the next two), in the same order (the
      * nearest-face search lists them so); |v0 - v2|^2 = |e02|^2 exactly. */
-    agjk_vec3 e12 = v3_sub(w2, w1), e13 = v3_sub(w3, w1), e20 = v3_sub(p0, w2), e23 = v3_sub(w3, w2);
+    agjk_vec3 e12 = v3_sub(w2, w1), e13 = v3_sub(w3, w1);
+    agjk_vec3 e20 = v3_sub(p0, w2), e23 = v3_sub(w3, w2);
     if (start_face(st, 0, swap ? c12 : v3_cross(e02, e01), p0, l02, l01, max3(r0, r2, r1)) &&
         start_face(st, 1, v3_cross(e01, e3), p0, l01, l3, max3(r0, r1, r3)) &&
         start_face(st, 2, v3_cross(e12, e13), w1, v3_norm2(e12), v3_norm2(e13),
@@ -709,8 +710,9 @@ void agjk__epa(agjk__minkowski *md, const agjk__epa_input *in, agjk__epa_output 
     if (out->estimate > out->upper) out->estimate = out->upper;
     if (out->estimate < out->lower) out->estimate = out->lower;
     out->normal = st.upper_n;
-    out->converged = out->outcome != AGJK__EPA_BAD_SUPPORT &&
-                     (met >= 0 ? met : width_met(&st, in, agjk__epa_noise(md), agjk__epa_floor(md)));
+    if (met < 0 && out->outcome != AGJK__EPA_BAD_SUPPORT)
+        met = width_met(&st, in, agjk__epa_noise(md), agjk__epa_floor(md));
+    out->converged = out->outcome != AGJK__EPA_BAD_SUPPORT && met;
     if (out->converged && out->outcome != AGJK__EPA_FLAT) out->outcome = AGJK__EPA_CONVERGED;
     out->support_calls = st.support_calls;
 }
