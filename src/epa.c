@@ -82,7 +82,6 @@ double agjk__epa_floor(const agjk__minkowski *md) {
     return 256.0 * md->noise;
 }
 
-
 /* sqrt(tolerance) in solver units, as agjk__epa_target computes it (so that
  * it bounds the target in absolute mode). */
 static double width_cap(double tolerance, double scale) { return sqrt(tolerance * scale * scale); }
@@ -137,12 +136,12 @@ static int support(epa_state *st, agjk_vec3 n, agjk__vertex *s, double *h_out) {
 }
 
 /* Plane of the triangle p0, p0 + e1, p0 + e2 (e1, e2 its computed edges, of
- * squared lengths l1, l2; c = e1 x e2): unit normal (right hand), offset, and a rounding
- * allowance on the offset. The computed normal is off the true one by an
- * angle of a few eps |e1| |e2| / |e1 x e2| (cancellation in the cross product
- * of the rounded edges), which moves the offset by that times |p|; r >= the
- * max |p_i| of the three points bounds |p|. Returns 0 for a triangle without
- * a normal. */
+ * squared lengths l1, l2; c = e1 x e2): unit normal (right hand), offset, and
+ * a rounding allowance on the offset. The computed normal is off the true one
+ * by an angle of a few eps |e1| |e2| / |e1 x e2| (cancellation in the cross
+ * product of the rounded edges), which moves the offset by that times |p|;
+ * r >= the max |p_i| of the three points bounds |p|. Returns 0 for a triangle
+ * without a normal. */
 static inline int plane_of(agjk_vec3 c, agjk_vec3 p0, double l1, double l2, double r,
                            agjk_vec3 *n, double *dist, double *err) {
     double len2 = v3_norm2(c);
