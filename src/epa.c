@@ -531,8 +531,8 @@ static int nearest_face(epa_state *st, double *proved) {
 }
 
 /* Whether [lower, upper] (depth, with vertex noise) meets the target. */
-static int width_met(const epa_state *st, const agjk__epa_input *in, double noise,
-                     double floor) {
+static AGJK__ALWAYS_INLINE int width_met(const epa_state *st, const agjk__epa_input *in,
+                                         double noise, double floor) {
     double lo = st->lower - 2.0 * noise, up = st->upper + 2.0 * noise;
     if (!(up < INFINITY) || !(lo > -INFINITY)) return 0;
     /* In absolute mode the target is at most max(sqrt(tolerance) (solver
