@@ -116,8 +116,10 @@ static void follow_rescale(epa_state *st) {
 
 /* The point of D farthest along n (a unit vector to rounding: a face normal
  * or a blow-up direction), its value <n, s> in *h, and the upper bound it
- * proves. */
-static int support(epa_state *st, agjk_vec3 n, agjk__vertex *s, double *h_out) {
+ * proves. Inline in EPA's loop; support_rare (out of line) for the blow-up
+ * and the final call, so that the support path is expanded once. */
+static AGJK__ALWAYS_INLINE int support(epa_state *st, agjk_vec3 n, agjk__vertex *s,
+                                       double *h_out) {
     agjk__minkowski_support(st->md, v3_neg(n), s); /* argmin <-n, .> */
     ++st->support_calls;
     if (st->md->bad_support) return 0;
@@ -133,6 +135,11 @@ static int support(epa_state *st, agjk_vec3 n, agjk__vertex *s, double *h_out) {
     }
     *h_out = h;
     return 1;
+}
+
+static AGJK__NOINLINE int support_rare(epa_state *st, agjk_vec3 n, agjk__vertex *s,
+                                       double *h_out) {
+    return support(st, n, s, h_out);
 }
 
 /* Plane of the triangle p0, p0 + e1, p0 + e2 (e1, e2 its computed edges, of
@@ -256,9 +263,9 @@ static int blow_up(epa_state *st, const agjk__vertex *simplex, int count, int *f
         for (int i = 0; i < nd && !added; ++i) {
             agjk__vertex plus, minus;
             double h, scale;
-            if (!support(st, dirs[i], &plus, &h)) return 0;
+            if (!support_rare(st, dirs[i], &plus, &h)) return 0;
             scale = st->md->scale;
-            if (!support(st, v3_neg(dirs[i]), &minus, &h)) return 0;
+            if (!support_rare(st, v3_neg(dirs[i]), &minus, &h)) return 0;
             if (st->md->scale != scale) { /* the second call lowered the units: follow */
                 double f = st->md->scale / scale; /* a power of two: exact */
                 plus.w = v3_scale(plus.w, f);
@@ -687,7 +694,8 @@ void agjk__epa(agjk__minkowski *md, const agjk__epa_input *in, agjk__epa_output 
         if (!(st.upper < INFINITY) && best >= 0) {
             /* No support value yet (cap before the first call): take one. */
             double h;
-            if (!support(&st, st.f[best].n, &st.v[st.nv], &h)) out->outcome = AGJK__EPA_BAD_SUPPORT;
+            if (!support_rare(&st, st.f[best].n, &st.v[st.nv], &h))
+                out->outcome = AGJK__EPA_BAD_SUPPORT;
             met = -1;
         }
     }
