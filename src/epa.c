@@ -82,23 +82,6 @@ double agjk__epa_floor(const agjk__minkowski *md) {
     return 256.0 * md->noise;
 }
 
-double agjk__epa_target(int relative, double tolerance, double scale, double s_lo, double s_hi,
-                        double floor) {
-    double lo = fabs(s_lo), hi = fabs(s_hi);
-    double big = lo > hi ? lo : hi;
-    if (relative) {
-        /* The smallest |s| the interval allows (0 when it holds 0). */
-        double small = (s_lo > 0.0 || s_hi < 0.0) ? (lo < hi ? lo : hi) : 0.0;
-        return 0.5 * tolerance * small;
-    }
-    /* What agjk_distance certifies at distance |s| with gap <= tolerance:
-     * min(sqrt(g), g / (2 |s|)); the largest |s| of the interval is the safe one. */
-    double tol = tolerance * scale * scale;
-    double target = sqrt(tol);
-    if (big > 0.0 && tol / (2.0 * big) < target) target = tol / (2.0 * big);
-    return target > floor ? target : floor;
-}
-
 /* sqrt(tolerance) in solver units, as agjk__epa_target computes it (so that
  * it bounds the target in absolute mode). */
 static double width_cap(double tolerance, double scale) { return sqrt(tolerance * scale * scale); }
@@ -133,8 +116,10 @@ static void follow_rescale(epa_state *st) {
 
 /* The point of D farthest along n (a unit vector to rounding: a face normal
  * or a blow-up direction), its value <n, s> in *h, and the upper bound it
- * proves. */
-static int support(epa_state *st, agjk_vec3 n, agjk__vertex *s, double *h_out) {
+ * proves. Inline in EPA's loop; support_rare (out of line) for the blow-up
+ * and the final call, so that the support path is expanded once. */
+static AGJK__ALWAYS_INLINE int support(epa_state *st, agjk_vec3 n, agjk__vertex *s,
+                                       double *h_out) {
     agjk__minkowski_support(st->md, v3_neg(n), s); /* argmin <-n, .> */
     ++st->support_calls;
     if (st->md->bad_support) return 0;
@@ -152,16 +137,20 @@ static int support(epa_state *st, agjk_vec3 n, agjk__vertex *s, double *h_out) {
     return 1;
 }
 
+static AGJK__NOINLINE int support_rare(epa_state *st, agjk_vec3 n, agjk__vertex *s,
+                                       double *h_out) {
+    return support(st, n, s, h_out);
+}
+
 /* Plane of the triangle p0, p0 + e1, p0 + e2 (e1, e2 its computed edges, of
- * squared lengths l1, l2): unit normal (right hand), offset, and a rounding
- * allowance on the offset. The computed normal is off the true one by an
- * angle of a few eps |e1| |e2| / |e1 x e2| (cancellation in the cross product
- * of the rounded edges), which moves the offset by that times |p|; r >= the
- * max |p_i| of the three points bounds |p|. Returns 0 for a triangle without
- * a normal. */
-static inline int face_plane(agjk_vec3 p0, agjk_vec3 e1, agjk_vec3 e2, double l1, double l2,
-                             double r, agjk_vec3 *n, double *dist, double *err) {
-    agjk_vec3 c = v3_cross(e1, e2);
+ * squared lengths l1, l2; c = e1 x e2): unit normal (right hand), offset, and
+ * a rounding allowance on the offset. The computed normal is off the true one
+ * by an angle of a few eps |e1| |e2| / |e1 x e2| (cancellation in the cross
+ * product of the rounded edges), which moves the offset by that times |p|;
+ * r >= the max |p_i| of the three points bounds |p|. Returns 0 for a triangle
+ * without a normal. */
+static inline int plane_of(agjk_vec3 c, agjk_vec3 p0, double l1, double l2, double r,
+                           agjk_vec3 *n, double *dist, double *err) {
     double len2 = v3_norm2(c);
     if (!(len2 > 0.0) || !isfinite(len2)) return 0;
     double inv = 1.0 / sqrt(len2);
@@ -174,6 +163,12 @@ static inline int face_plane(agjk_vec3 p0, agjk_vec3 e1, agjk_vec3 e2, double l1
     return 1; /* finite: solver units keep coordinates below 2^101 */
 }
 
+/* The same from the edges: c = e1 x e2. */
+static inline int face_plane(agjk_vec3 p0, agjk_vec3 e1, agjk_vec3 e2, double l1, double l2,
+                             double r, agjk_vec3 *n, double *dist, double *err) {
+    return plane_of(v3_cross(e1, e2), p0, l1, l2, r, n, dist, err);
+}
+
 /* max |w_i| over the vertices of a triangle. */
 static double max3(double a, double b, double c) {
     double m = a > b ? a : b;
@@ -181,8 +176,8 @@ static double max3(double a, double b, double c) {
 }
 
 /* Writes face fi (vertices a b c, plane n dist err) and its key. */
-static void set_face(epa_state *st, int fi, int a, int b, int c, agjk_vec3 n, double dist,
-                     double err) {
+static AGJK__ALWAYS_INLINE void set_face(epa_state *st, int fi, int a, int b, int c,
+                                         agjk_vec3 n, double dist, double err) {
     epa_face *f = &st->f[fi];
     f->v[0] = a;
     f->v[1] = b;
@@ -268,9 +263,9 @@ static int blow_up(epa_state *st, const agjk__vertex *simplex, int count, int *f
         for (int i = 0; i < nd && !added; ++i) {
             agjk__vertex plus, minus;
             double h, scale;
-            if (!support(st, dirs[i], &plus, &h)) return 0;
+            if (!support_rare(st, dirs[i], &plus, &h)) return 0;
             scale = st->md->scale;
-            if (!support(st, v3_neg(dirs[i]), &minus, &h)) return 0;
+            if (!support_rare(st, v3_neg(dirs[i]), &minus, &h)) return 0;
             if (st->md->scale != scale) { /* the second call lowered the units: follow */
                 double f = st->md->scale / scale; /* a power of two: exact */
                 plus.w = v3_scale(plus.w, f);
@@ -294,6 +289,16 @@ static int blow_up(epa_state *st, const agjk__vertex *simplex, int count, int *f
     return 1;
 }
 
+/* The faces of a tetrahedron v[0..3] with v[3] above the triangle v[0] v[1]
+ * v[2]: face i holds the edges tetra_tri[i][e] -> tetra_tri[i][e + 1], outward;
+ * tetra_adj[i][e] is the face holding the same edge reversed, and that edge's
+ * index in it. */
+static const int tetra_tri[4][3] = {{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {2, 0, 3}};
+static const int tetra_adj[4][3] = {{ADJ(3, 0), ADJ(2, 0), ADJ(1, 0)},
+                                    {ADJ(0, 2), ADJ(2, 2), ADJ(3, 1)},
+                                    {ADJ(0, 1), ADJ(3, 2), ADJ(1, 1)},
+                                    {ADJ(0, 0), ADJ(1, 2), ADJ(2, 1)}};
+
 /* Faces of the tetrahedron st->v[0..3], outward, with their adjacency. */
 static int tetrahedron_faces(epa_state *st) {
     agjk_vec3 p0 = st->v[0].w;
@@ -311,13 +316,6 @@ static int tetrahedron_faces(epa_state *st) {
         st->hint_a[i] = st->md->hint_a; /* the last call's: valid, if not the best */
         st->hint_b[i] = st->md->hint_b;
     }
-    /* Face i holds the edges tri[i][e] -> tri[i][e + 1]; adj[i][e] is the face
-     * holding the same edge reversed, and that edge's index in it. */
-    static const int tri[4][3] = {{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {2, 0, 3}};
-    static const int adj[4][3] = {{ADJ(3, 0), ADJ(2, 0), ADJ(1, 0)},
-                                  {ADJ(0, 2), ADJ(2, 2), ADJ(3, 1)},
-                                  {ADJ(0, 1), ADJ(3, 2), ADJ(1, 1)},
-                                  {ADJ(0, 0), ADJ(1, 2), ADJ(2, 1)}};
     st->nf = 4;
     st->nfree = 0;
     for (int i = 0; i < 4; ++i) {
@@ -325,7 +323,7 @@ static int tetrahedron_faces(epa_state *st) {
         st->f[i].mark = 0;
     }
     for (int i = 0; i < 4; ++i) {
-        const int *t = tri[i];
+        const int *t = tetra_tri[i];
         agjk_vec3 n, q = st->v[t[0]].w;
         agjk_vec3 e1 = v3_sub(st->v[t[1]].w, q), e2 = v3_sub(st->v[t[2]].w, q);
         double d, err;
@@ -333,9 +331,79 @@ static int tetrahedron_faces(epa_state *st) {
                         max3(st->vmax[t[0]], st->vmax[t[1]], st->vmax[t[2]]), &n, &d, &err))
             return 0;
         set_face(st, i, t[0], t[1], t[2], n, d, err);
-        for (int e = 0; e < 3; ++e) st->f[i].adj[e] = adj[i][e];
+        for (int e = 0; e < 3; ++e) st->f[i].adj[e] = tetra_adj[i][e];
     }
     return 1;
+}
+
+/* Face i of the tetrahedron (tetra_tri, tetra_adj) from its plane's cross
+ * product c, first vertex p0, squared edge lengths l1, l2 and max |w_i| r. */
+static AGJK__ALWAYS_INLINE int start_face(epa_state *st, int i, agjk_vec3 c, agjk_vec3 p0,
+                                          double l1, double l2, double r) {
+    agjk_vec3 n;
+    double d, err;
+    if (!plane_of(c, p0, l1, l2, r, &n, &d, &err)) return 0;
+    const int *t = tetra_tri[i];
+    set_face(st, i, t[0], t[1], t[2], n, d, err);
+    for (int e = 0; e < 3; ++e) st->f[i].adj[e] = tetra_adj[i][e];
+    return 1;
+}
+
+/* GJK's tetrahedron (count 4: how an overlapping query usually ends), set up
+ * as blow_up and tetrahedron_faces would, bit for bit, with what they share
+ * computed once: the edges from the first point, their squared lengths, the
+ * cross product whose determinant orients the tetrahedron, each vertex copied
+ * once in its final order. blow_up keeps each point that lies off the hull of
+ * those before it by more than its threshold; the same three tests here, on
+ * the same operands (a cross product with its factors swapped is the exact
+ * negation: equal squared norms). Returns 0 when any test or face fails; the
+ * general path then starts over (and meets the same failure). */
+static int tetrahedron_start(epa_state *st, const agjk__vertex *sx) {
+    double thr = agjk__epa_floor(st->md), t2 = thr * thr;
+    agjk_vec3 p0 = sx[0].w;
+    agjk_vec3 e1 = v3_sub(sx[1].w, p0), e2 = v3_sub(sx[2].w, p0), e3 = v3_sub(sx[3].w, p0);
+    double l1 = v3_norm2(e1), l2 = v3_norm2(e2), l3 = v3_norm2(e3);
+    agjk_vec3 c12 = v3_cross(e1, e2);
+    double c2 = v3_norm2(c12), det = v3_dot(c12, e3);
+    if (!(l1 > t2) || !(c2 > t2 * l1) || !(det * det > t2 * c2) || !isfinite(det)) return 0;
+    /* v[3] above the triangle v[0] v[1] v[2]: with det < 0 the second and
+     * third points trade places (tetrahedron_faces' swap). */
+    int swap = det < 0.0;
+    const agjk__vertex *q1 = &sx[swap ? 2 : 1], *q2 = &sx[swap ? 1 : 2];
+    st->v[0] = sx[0];
+    st->v[1] = *q1;
+    st->v[2] = *q2;
+    st->v[3] = sx[3];
+    st->nv = 4;
+    const agjk_vec3 w1 = q1->w, w2 = q2->w, w3 = sx[3].w;
+    agjk_vec3 e01 = swap ? e2 : e1, e02 = swap ? e1 : e2;
+    double l01 = swap ? l2 : l1, l02 = swap ? l1 : l2;
+    double r0 = v3_maxabs(p0), r1 = v3_maxabs(w1), r2 = v3_maxabs(w2), r3 = v3_maxabs(w3);
+    const int ha = st->md->hint_a, hb = st->md->hint_b; /* as tetrahedron_faces */
+    st->vmax[0] = r0;
+    st->vmax[1] = r1;
+    st->vmax[2] = r2;
+    st->vmax[3] = r3;
+    st->vmark[0] = st->vmark[1] = st->vmark[2] = st->vmark[3] = 0;
+    st->hint_a[0] = st->hint_a[1] = st->hint_a[2] = st->hint_a[3] = ha;
+    st->hint_b[0] = st->hint_b[1] = st->hint_b[2] = st->hint_b[3] = hb;
+    st->f[0].mark = st->f[1].mark = st->f[2].mark = st->f[3].mark = 0;
+    for (int i = 0; i < 4; ++i) agjk__epa_scan_fresh(&st->scan, i);
+    st->nf = 4;
+    st->nfree = 0;
+    /* Each face's plane from the same edges as tetrahedron_faces (tetra_tri:
+     * from its first vertex to the next two), in the same order (the
+     * nearest-face search lists them so); |v0 - v2|^2 = |e02|^2 exactly. */
+    agjk_vec3 e12 = v3_sub(w2, w1), e13 = v3_sub(w3, w1);
+    agjk_vec3 e20 = v3_sub(p0, w2), e23 = v3_sub(w3, w2);
+    if (start_face(st, 0, swap ? c12 : v3_cross(e02, e01), p0, l02, l01, max3(r0, r2, r1)) &&
+        start_face(st, 1, v3_cross(e01, e3), p0, l01, l3, max3(r0, r1, r3)) &&
+        start_face(st, 2, v3_cross(e12, e13), w1, v3_norm2(e12), v3_norm2(e13),
+                   max3(r1, r2, r3)) &&
+        start_face(st, 3, v3_cross(e20, e23), w2, l02, v3_norm2(e23), max3(r2, r0, r3)))
+        return 1;
+    agjk__epa_scan_init(&st->scan); /* the general path lists its faces afresh */
+    return 0;
 }
 
 /* Adds s to the polytope, seen from face f0 (sees(f0, s)): removes the faces
@@ -470,8 +538,8 @@ static int nearest_face(epa_state *st, double *proved) {
 }
 
 /* Whether [lower, upper] (depth, with vertex noise) meets the target. */
-static int width_met(const epa_state *st, const agjk__epa_input *in, double noise,
-                     double floor) {
+static AGJK__ALWAYS_INLINE int width_met(const epa_state *st, const agjk__epa_input *in,
+                                         double noise, double floor) {
     double lo = st->lower - 2.0 * noise, up = st->upper + 2.0 * noise;
     if (!(up < INFINITY) || !(lo > -INFINITY)) return 0;
     /* In absolute mode the target is at most max(sqrt(tolerance) (solver
@@ -488,13 +556,17 @@ static int width_met(const epa_state *st, const agjk__epa_input *in, double nois
  * triangle it falls (0 inside), relative to the triangle's size. */
 static double foot_weights(const epa_state *st, const epa_face *f, double l[3]) {
     agjk_vec3 q = v3_scale(f->n, f->dist);
-    double sum = 0.0, worst = 0.0;
-    for (int i = 0; i < 3; ++i) {
-        agjk_vec3 p1 = st->v[f->v[(i + 1) % 3]].w, p2 = st->v[f->v[(i + 2) % 3]].w;
-        l[i] = v3_dot(v3_cross(v3_sub(p1, q), v3_sub(p2, q)), f->n);
-        sum += fabs(l[i]);
-        if (l[i] < worst) worst = l[i];
-    }
+    /* (Written out: each vertex's offset from q computed once, no index
+     * arithmetic.) */
+    agjk_vec3 d0 = v3_sub(st->v[f->v[0]].w, q), d1 = v3_sub(st->v[f->v[1]].w, q),
+              d2 = v3_sub(st->v[f->v[2]].w, q);
+    l[0] = v3_dot(v3_cross(d1, d2), f->n);
+    l[1] = v3_dot(v3_cross(d2, d0), f->n);
+    l[2] = v3_dot(v3_cross(d0, d1), f->n);
+    double sum = fabs(l[0]) + fabs(l[1]) + fabs(l[2]);
+    double worst = l[0] < 0.0 ? l[0] : 0.0;
+    if (l[1] < worst) worst = l[1];
+    if (l[2] < worst) worst = l[2];
     return sum > 0.0 ? -worst / sum : INFINITY;
 }
 
@@ -520,21 +592,21 @@ static void face_witness(const epa_state *st, int best, agjk__epa_output *out) {
         }
     }
     const epa_face *f = &st->f[best];
-    double sum = 0.0;
-    for (int i = 0; i < 3; ++i) {
+    for (int i = 0; i < 3; ++i)
         if (!(l[i] > 0.0)) l[i] = 0.0;
-        sum += l[i];
-    }
+    double sum = l[0] + l[1] + l[2];
     if (!(sum > 0.0) || !isfinite(sum)) {
         l[0] = l[1] = l[2] = 1.0;
         sum = 3.0;
     }
-    out->a = v3(0.0, 0.0, 0.0);
-    out->b = v3(0.0, 0.0, 0.0);
-    for (int i = 0; i < 3; ++i) {
-        out->a = v3_add(out->a, v3_scale(st->v[f->v[i]].a, l[i] / sum));
-        out->b = v3_add(out->b, v3_scale(st->v[f->v[i]].b, l[i] / sum));
-    }
+    const agjk__vertex *p0 = &st->v[f->v[0]], *p1 = &st->v[f->v[1]], *p2 = &st->v[f->v[2]];
+    double t0 = l[0] / sum, t1 = l[1] / sum, t2 = l[2] / sum;
+    /* (From +0, as a sum: a zero keeps its sign.) */
+    agjk_vec3 zero = v3(0.0, 0.0, 0.0);
+    out->a = v3_add(v3_add(v3_add(zero, v3_scale(p0->a, t0)), v3_scale(p1->a, t1)),
+                    v3_scale(p2->a, t2));
+    out->b = v3_add(v3_add(v3_add(zero, v3_scale(p0->b, t0)), v3_scale(p1->b, t1)),
+                    v3_scale(p2->b, t2));
     out->has_witness = 1;
 }
 
@@ -559,7 +631,11 @@ void agjk__epa(agjk__minkowski *md, const agjk__epa_input *in, agjk__epa_output 
     out->converged = 0;
 
     int flat = 0;
-    int ok = blow_up(&st, in->simplex, in->count, &flat) && tetrahedron_faces(&st);
+    /* width_met's verdict on the final bounds when the loop ended on one
+     * (nothing changes them afterwards then), -1 when still to be asked. */
+    int met = -1;
+    int ok = (in->count == 4 && tetrahedron_start(&st, in->simplex)) ||
+             (blow_up(&st, in->simplex, in->count, &flat) && tetrahedron_faces(&st));
     if (md->bad_support) {
         out->outcome = AGJK__EPA_BAD_SUPPORT;
     } else if (!ok) {
@@ -583,6 +659,7 @@ void agjk__epa(agjk__minkowski *md, const agjk__epa_input *in, agjk__epa_output 
             if (proved > st.lower) st.lower = proved;
             if (width_met(&st, in, agjk__epa_noise(md), agjk__epa_floor(md))) {
                 out->outcome = AGJK__EPA_CONVERGED;
+                met = 1;
                 break;
             }
             if (k >= in->max_iterations) break;
@@ -600,8 +677,8 @@ void agjk__epa(agjk__minkowski *md, const agjk__epa_input *in, agjk__epa_output 
             if (!(h - f->dist > f->err)) { /* sees(f, s->w) */
                 /* The face lies on D's boundary to rounding: the bounds are as
                  * tight as this polytope can make them. */
-                out->outcome = width_met(&st, in, agjk__epa_noise(md), agjk__epa_floor(md))
-                                   ? AGJK__EPA_CONVERGED : AGJK__EPA_NO_PROGRESS;
+                met = width_met(&st, in, agjk__epa_noise(md), agjk__epa_floor(md));
+                out->outcome = met ? AGJK__EPA_CONVERGED : AGJK__EPA_NO_PROGRESS;
                 break;
             }
             if (st.nv >= MAX_VERTICES) {
@@ -613,11 +690,13 @@ void agjk__epa(agjk__minkowski *md, const agjk__epa_input *in, agjk__epa_output 
                 break;
             }
         }
-        if (best >= 0) face_witness(&st, best, out);
+        if (best >= 0 && in->want_witness) face_witness(&st, best, out);
         if (!(st.upper < INFINITY) && best >= 0) {
             /* No support value yet (cap before the first call): take one. */
             double h;
-            if (!support(&st, st.f[best].n, &st.v[st.nv], &h)) out->outcome = AGJK__EPA_BAD_SUPPORT;
+            if (!support_rare(&st, st.f[best].n, &st.v[st.nv], &h))
+                out->outcome = AGJK__EPA_BAD_SUPPORT;
+            met = -1;
         }
     }
     /* Twice the solver's noise scale on each end: a support value and a face
@@ -638,8 +717,9 @@ void agjk__epa(agjk__minkowski *md, const agjk__epa_input *in, agjk__epa_output 
     if (out->estimate > out->upper) out->estimate = out->upper;
     if (out->estimate < out->lower) out->estimate = out->lower;
     out->normal = st.upper_n;
-    out->converged = out->outcome != AGJK__EPA_BAD_SUPPORT &&
-                     width_met(&st, in, agjk__epa_noise(md), agjk__epa_floor(md));
+    if (met < 0 && out->outcome != AGJK__EPA_BAD_SUPPORT)
+        met = width_met(&st, in, agjk__epa_noise(md), agjk__epa_floor(md));
+    out->converged = out->outcome != AGJK__EPA_BAD_SUPPORT && met;
     if (out->converged && out->outcome != AGJK__EPA_FLAT) out->outcome = AGJK__EPA_CONVERGED;
     out->support_calls = st.support_calls;
 }

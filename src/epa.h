@@ -28,6 +28,7 @@ typedef struct agjk__epa_input {
      * solver units: depth >= -it. */
     double core_distance_upper;
     int max_iterations;
+    int want_witness;            /* compute the deepest points a, b (else has_witness 0) */
 } agjk__epa_input;
 
 typedef struct agjk__epa_output {
@@ -38,7 +39,7 @@ typedef struct agjk__epa_output {
     double lower, upper;
     double estimate;      /* support value in `normal`, within [lower, upper] */
     agjk_vec3 normal;     /* unit, A's frame: the direction of `estimate` */
-    int has_witness;      /* a, b below are set */
+    int has_witness;      /* a, b below are set (only when asked: want_witness) */
     agjk_vec3 a, b;       /* deepest core points of A and B, A's frame, solver units */
     int iterations;
     int support_calls;
@@ -122,9 +123,24 @@ static inline int agjk__epa_scan_nearest(agjk__epa_scan *sc, const double *key, 
 
 /* Width the interval on the signed distance must reach (solver units), given
  * the interval [s_lo, s_hi] on the signed distance with margins (solver units)
- * and the tolerance; the floating-point floor raises it in absolute mode. */
-double agjk__epa_target(int relative, double tolerance, double scale, double s_lo,
-                        double s_hi, double floor);
+ * and the tolerance; the floating-point floor raises it in absolute mode.
+ * Inline: EPA asks at every iteration the cheaper cap of width_met leaves open. */
+static inline double agjk__epa_target(int relative, double tolerance, double scale, double s_lo,
+                                       double s_hi, double floor) {
+    double lo = fabs(s_lo), hi = fabs(s_hi);
+    double big = lo > hi ? lo : hi;
+    if (relative) {
+        /* The smallest |s| the interval allows (0 when it holds 0). */
+        double small = (s_lo > 0.0 || s_hi < 0.0) ? (lo < hi ? lo : hi) : 0.0;
+        return 0.5 * tolerance * small;
+    }
+    /* What agjk_distance certifies at distance |s| with gap <= tolerance:
+     * min(sqrt(g), g / (2 |s|)); the largest |s| of the interval is the safe one. */
+    double tol = tolerance * scale * scale;
+    double target = sqrt(tol);
+    if (big > 0.0 && tol / (2.0 * big) < target) target = tol / (2.0 * big);
+    return target > floor ? target : floor;
+}
 
 /* Floating-point floor of the interval width for the problem md (solver units). */
 double agjk__epa_floor(const agjk__minkowski *md);

@@ -57,12 +57,19 @@ void agjk__minkowski_init(agjk__minkowski *md, const agjk_shape *a, const agjk_p
      * Boolean query); same sums in the same order. */
     const double *ra = &pose_a->rotation[0][0], *rb = &pose_b->rotation[0][0];
     agjk_vec3 b0 = v3(rb[0], rb[1], rb[2]), b1 = v3(rb[3], rb[4], rb[5]), b2 = v3(rb[6], rb[7], rb[8]);
-    for (int i = 0; i < 3; ++i) {
-        agjk_vec3 row = v3_add(v3_add(v3_scale(b0, ra[i]), v3_scale(b1, ra[3 + i])), v3_scale(b2, ra[6 + i]));
-        md->rotation[i][0] = row.x;
-        md->rotation[i][1] = row.y;
-        md->rotation[i][2] = row.z;
-    }
+    /* (The three rows written out too: -O2 keeps a three-pass loop.) */
+    agjk_vec3 r0 = v3_add(v3_add(v3_scale(b0, ra[0]), v3_scale(b1, ra[3])), v3_scale(b2, ra[6]));
+    agjk_vec3 r1 = v3_add(v3_add(v3_scale(b0, ra[1]), v3_scale(b1, ra[4])), v3_scale(b2, ra[7]));
+    agjk_vec3 r2 = v3_add(v3_add(v3_scale(b0, ra[2]), v3_scale(b1, ra[5])), v3_scale(b2, ra[8]));
+    md->rotation[0][0] = r0.x;
+    md->rotation[0][1] = r0.y;
+    md->rotation[0][2] = r0.z;
+    md->rotation[1][0] = r1.x;
+    md->rotation[1][1] = r1.y;
+    md->rotation[1][2] = r1.z;
+    md->rotation[2][0] = r2.x;
+    md->rotation[2][1] = r2.y;
+    md->rotation[2][2] = r2.z;
     md->translation = m3_tmul(ra, v3_sub(pose_b->translation, pose_a->translation));
     md->translation_size = v3_maxabs(md->translation);
     md->noise_floor = 0.0;

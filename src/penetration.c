@@ -7,7 +7,7 @@
 #include "epa.h"
 #include "query_setup.h"
 
-static agjk_vec3 to_world(const agjk_pose *pose, agjk_vec3 p) {
+static AGJK__ALWAYS_INLINE agjk_vec3 to_world(const agjk_pose *pose, agjk_vec3 p) {
     return v3_add(m3_mul(&pose->rotation[0][0], p), pose->translation);
 }
 
@@ -31,7 +31,8 @@ typedef struct gjk_summary {
 
 static void run_gjk(agjk__minkowski *md, agjk__solve_input *in, agjk__solve_output *out,
                     gjk_summary *g) {
-    in->want_witness = 1; /* EPA's degenerate cases use GJK's points */
+    /* want_witness stays the caller's: GJK's points serve only as witness
+     * points (separated cores, or EPA's flat and degenerate cases). */
     in->want_simplex = 1; /* EPA starts from GJK's final simplex */
     agjk__solve(md, in, out);
     g->bad_support = out->outcome == AGJK__BAD_SUPPORT;
@@ -167,6 +168,7 @@ agjk_status agjk_signed_distance(const agjk_shape *a, const agjk_pose *pose_a,
     ein.margin = margin;
     ein.core_distance_upper = g.core_upper;
     ein.max_iterations = opts.max_iterations;
+    ein.want_witness = witness;
     agjk__epa_output eout;
     agjk__epa(&md, &ein, &eout);
     result->epa_iterations = eout.iterations;

@@ -448,15 +448,21 @@ static int update_simplex(solver *sv, const agjk__vertex *s, agjk_vec3 *x) {
      * than a test and a branch per vertex. Forward copies with source >=
      * destination, so in place is safe. */
     const unsigned char *from = support_order[mask & 0xFu];
-    for (int i = 0; i < 3; ++i) {
-        sv->w[i] = sv->w[from[i]];
-        sv->lambda[i] = l[from[i]];
-    }
+    /* (Written out: -O2 keeps a three-pass loop, with its index loads.) */
+    const int f0 = from[0], f1 = from[1], f2 = from[2];
+    sv->w[0] = sv->w[f0];
+    sv->w[1] = sv->w[f1];
+    sv->w[2] = sv->w[f2];
+    sv->lambda[0] = l[f0];
+    sv->lambda[1] = l[f1];
+    sv->lambda[2] = l[f2];
     if (sv->in->keep_points) {
-        for (int i = 0; i < 3; ++i) {
-            sv->a[i] = sv->a[from[i]];
-            sv->b[i] = sv->b[from[i]];
-        }
+        sv->a[0] = sv->a[f0];
+        sv->a[1] = sv->a[f1];
+        sv->a[2] = sv->a[f2];
+        sv->b[0] = sv->b[f0];
+        sv->b[1] = sv->b[f1];
+        sv->b[2] = sv->b[f2];
     }
     sv->count = support_size[mask & 0xFu];
     return 0;

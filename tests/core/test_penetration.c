@@ -467,6 +467,18 @@ START_TEST(witness_points) {
         agjk_options o = agjk_default_options();
         o.tolerance = 1e-16;
         agjk_signed_result r = signed_query(&a, &pa, &b, &pb, &o);
+        /* Without witness points asked: the same answer, bit for bit, and
+         * zero witnesses (neither GJK nor EPA computes them then). */
+        agjk_options bare = o;
+        bare.compute = AGJK_COMPUTE_DISTANCE;
+        agjk_signed_result rb = signed_query(&a, &pa, &b, &pb, &bare);
+        TU_ENSURE(rb.status == r.status && rb.signed_distance == r.signed_distance &&
+                      rb.lower == r.lower && rb.upper == r.upper &&
+                      rb.normal.x == r.normal.x && rb.normal.y == r.normal.y &&
+                      rb.normal.z == r.normal.z && rb.epa_iterations == r.epa_iterations,
+                  "pair %d: another answer without witness points", i);
+        TU_ENSURE(tu_norm(rb.witness_a) == 0.0 && tu_norm(rb.witness_b) == 0.0,
+                  "pair %d: witness points not asked for", i);
         if (r.status != AGJK_STATUS_INTERSECTING) continue;
         double tol = 1e-6 * size;
         agjk_vec3 diff = tu_sub(r.witness_a, r.witness_b);
@@ -564,6 +576,74 @@ START_TEST(degenerate_and_capped) {
 }
 END_TEST
 
+/* EPA started on four points (GJK's usual end) that do not span a proper
+ * tetrahedron: the common start's tests reject them (a repeated point, a
+ * point on the line of two others, four points on a face of D) and the
+ * general blow-up takes over; and one proper tetrahedron. D is the box
+ * A - B of two axis-aligned boxes, its depth known exactly: 0.2. */
+START_TEST(four_point_starts) {
+    agjk_box ba = {{0.5, 0.4, 0.3}}, bb = {{0.3, 0.3, 0.3}};
+    agjk_shape a, b;
+    agjk_shape_box(&a, &ba);
+    agjk_shape_box(&b, &bb);
+    agjk_pose pa = ident(), pb = at(0.6, 0.1, 0.05);
+    const double truth = 0.2;
+    for (int kind = 0; kind < 4; ++kind) {
+        agjk__minkowski md;
+        agjk__minkowski_init(&md, &a, &pa, &b, &pb, 0, 0);
+        /* Vertices of D: the support in direction -(sx, sy, sz) is the
+         * corner on that side. */
+        agjk__vertex corner[8];
+        for (int i = 0; i < 8; ++i)
+            agjk__minkowski_support(&md, v3(i & 1 ? 1.0 : -1.0, i & 2 ? 1.0 : -1.0,
+                                            i & 4 ? 1.0 : -1.0), &corner[i]);
+        agjk__vertex sx[4];
+        if (kind == 0) { /* the face of D at the largest x: coplanar */
+            sx[0] = corner[0];
+            sx[1] = corner[2];
+            sx[2] = corner[4];
+            sx[3] = corner[6];
+        } else if (kind == 1) { /* a repeated point */
+            sx[0] = corner[0];
+            sx[1] = corner[0];
+            sx[2] = corner[3];
+            sx[3] = corner[5];
+        } else if (kind == 2) { /* the midpoint of an edge of D, a point of D too */
+            sx[0] = corner[0];
+            sx[1] = corner[7];
+            sx[2].w = v3_scale(v3_add(corner[0].w, corner[7].w), 0.5);
+            sx[2].a = v3_scale(v3_add(corner[0].a, corner[7].a), 0.5);
+            sx[2].b = v3_scale(v3_add(corner[0].b, corner[7].b), 0.5);
+            sx[3] = corner[3];
+        } else { /* alternate corners: a tetrahedron around the origin */
+            sx[0] = corner[0];
+            sx[1] = corner[3];
+            sx[2] = corner[5];
+            sx[3] = corner[6];
+        }
+        agjk__epa_input in;
+        in.simplex = sx;
+        in.count = 4;
+        in.relative = 0;
+        in.tolerance = 1e-20;
+        in.margin = 0.0;
+        in.core_distance_upper = md.noise;
+        in.max_iterations = 100;
+        in.want_witness = 1;
+        agjk__epa_output out;
+        agjk__epa(&md, &in, &out);
+        TU_ENSURE(out.outcome == AGJK__EPA_CONVERGED && out.converged,
+                  "start %d: outcome %d", kind, (int)out.outcome);
+        TU_ENSURE(out.lower <= truth && truth <= out.upper && out.upper - out.lower < 1e-12,
+                  "start %d: [%.17g, %.17g] misses %.17g", kind, out.lower, out.upper, truth);
+        TU_ENSURE(out.has_witness && fabs(out.normal.x - 1.0) < 1e-12,
+                  "start %d: normal %g %g %g", kind, out.normal.x, out.normal.y, out.normal.z);
+        TU_ENSURE(kind == 3 || out.support_calls >= 2,
+                  "start %d: no blow-up (%d support calls)", kind, out.support_calls);
+    }
+}
+END_TEST
+
 /* EPA's nearest-face search (src/epa.h) visits only the faces below a bound
  * and must still find the least key of all: driven through random face
  * births, replacements, frees and bounds (above, among and below the keys:
@@ -626,6 +706,7 @@ int main(void) {
     TU_ADD(s, ellipsoids_vs_bb);
     TU_ADD(s, properties);
     TU_ADD(s, witness_points);
+    TU_ADD(s, four_point_starts);
     TU_ADD(s, degenerate_and_capped);
     return tu_run_suite(s);
 }
