@@ -18,7 +18,7 @@
  * upper bound.
  *
  * Like the rest of agjk: reentrant, thread-safe, no allocation (the polytope
- * lives on the stack: AGJK_EPA_MAX_VERTICES vertices, about 50 KB), every loop
+ * lives on the stack: AGJK_EPA_MAX_VERTICES vertices, about 46 KB), every loop
  * bounded. A program that never calls agjk_signed_distance links none of this
  * code.
  * @{
