@@ -40,7 +40,12 @@ typedef struct agjk_vec3 {
 /** A rigid transform: p_world = rotation * p_local + translation.
  *  `rotation` is row-major (rotation[row][column]) and must be orthonormal with
  *  determinant +1 to within 1e-6 per entry; queries reject anything else with
- *  AGJK_STATUS_INVALID_INPUT. */
+ *  AGJK_STATUS_INVALID_INPUT. A rotation orthonormal only to within e (a
+ *  float-converted one, say) stands for the rotation it approximates: B is
+ *  taken into A's frame by rotation_A^T, answers are certified for that
+ *  relative pose, and world-frame outputs (normal, witness points) come back
+ *  through rotation_A, so they carry e: against shapes placed by the matrices
+ *  as given, the normal's plane is off by about e times their extent. */
 typedef struct agjk_pose {
     double rotation[3][3];
     agjk_vec3 translation;
