@@ -299,6 +299,37 @@ static const int tetra_adj[4][3] = {{ADJ(3, 0), ADJ(2, 0), ADJ(1, 0)},
                                     {ADJ(0, 1), ADJ(3, 2), ADJ(1, 1)},
                                     {ADJ(0, 0), ADJ(1, 2), ADJ(2, 1)}};
 
+/* Face i of the tetrahedron (tetra_tri, tetra_adj) from its plane's cross
+ * product c, first vertex p0, squared edge lengths l1, l2 and max |w_i| r. */
+static AGJK__ALWAYS_INLINE int start_face(epa_state *st, int i, agjk_vec3 c, agjk_vec3 p0,
+                                          double l1, double l2, double r) {
+    agjk_vec3 n;
+    double d, err;
+    if (!plane_of(c, p0, l1, l2, r, &n, &d, &err)) return 0;
+    const int *t = tetra_tri[i];
+    set_face(st, i, t[0], t[1], t[2], n, d, err);
+    for (int e = 0; e < 3; ++e) st->f[i].adj[e] = tetra_adj[i][e];
+    return 1;
+}
+
+/* The per-vertex and per-face state of the tetrahedron st->v[0..3] (written
+ * out: -O2 keeps four-pass loops with their index arithmetic). */
+static AGJK__ALWAYS_INLINE void tetrahedron_state(epa_state *st) {
+    const int ha = st->md->hint_a, hb = st->md->hint_b; /* the last call's: valid, if not the best */
+    st->nv = 4;
+    st->vmax[0] = v3_maxabs(st->v[0].w);
+    st->vmax[1] = v3_maxabs(st->v[1].w);
+    st->vmax[2] = v3_maxabs(st->v[2].w);
+    st->vmax[3] = v3_maxabs(st->v[3].w);
+    st->vmark[0] = st->vmark[1] = st->vmark[2] = st->vmark[3] = 0;
+    st->hint_a[0] = st->hint_a[1] = st->hint_a[2] = st->hint_a[3] = ha;
+    st->hint_b[0] = st->hint_b[1] = st->hint_b[2] = st->hint_b[3] = hb;
+    st->f[0].mark = st->f[1].mark = st->f[2].mark = st->f[3].mark = 0;
+    for (int i = 0; i < 4; ++i) agjk__epa_scan_fresh(&st->scan, i);
+    st->nf = 4;
+    st->nfree = 0;
+}
+
 /* Faces of the tetrahedron st->v[0..3], outward, with their adjacency. */
 static int tetrahedron_faces(epa_state *st) {
     agjk_vec3 p0 = st->v[0].w;
@@ -310,42 +341,15 @@ static int tetrahedron_faces(epa_state *st) {
         st->v[1] = st->v[2];
         st->v[2] = t;
     }
-    for (int i = 0; i < 4; ++i) {
-        st->vmax[i] = v3_maxabs(st->v[i].w);
-        st->vmark[i] = 0;
-        st->hint_a[i] = st->md->hint_a; /* the last call's: valid, if not the best */
-        st->hint_b[i] = st->md->hint_b;
-    }
-    st->nf = 4;
-    st->nfree = 0;
-    for (int i = 0; i < 4; ++i) {
-        agjk__epa_scan_fresh(&st->scan, i);
-        st->f[i].mark = 0;
-    }
+    tetrahedron_state(st);
     for (int i = 0; i < 4; ++i) {
         const int *t = tetra_tri[i];
-        agjk_vec3 n, q = st->v[t[0]].w;
+        agjk_vec3 q = st->v[t[0]].w;
         agjk_vec3 e1 = v3_sub(st->v[t[1]].w, q), e2 = v3_sub(st->v[t[2]].w, q);
-        double d, err;
-        if (!face_plane(q, e1, e2, v3_norm2(e1), v3_norm2(e2),
-                        max3(st->vmax[t[0]], st->vmax[t[1]], st->vmax[t[2]]), &n, &d, &err))
+        if (!start_face(st, i, v3_cross(e1, e2), q, v3_norm2(e1), v3_norm2(e2),
+                        max3(st->vmax[t[0]], st->vmax[t[1]], st->vmax[t[2]])))
             return 0;
-        set_face(st, i, t[0], t[1], t[2], n, d, err);
-        for (int e = 0; e < 3; ++e) st->f[i].adj[e] = tetra_adj[i][e];
     }
-    return 1;
-}
-
-/* Face i of the tetrahedron (tetra_tri, tetra_adj) from its plane's cross
- * product c, first vertex p0, squared edge lengths l1, l2 and max |w_i| r. */
-static AGJK__ALWAYS_INLINE int start_face(epa_state *st, int i, agjk_vec3 c, agjk_vec3 p0,
-                                          double l1, double l2, double r) {
-    agjk_vec3 n;
-    double d, err;
-    if (!plane_of(c, p0, l1, l2, r, &n, &d, &err)) return 0;
-    const int *t = tetra_tri[i];
-    set_face(st, i, t[0], t[1], t[2], n, d, err);
-    for (int e = 0; e < 3; ++e) st->f[i].adj[e] = tetra_adj[i][e];
     return 1;
 }
 
@@ -374,23 +378,11 @@ static int tetrahedron_start(epa_state *st, const agjk__vertex *sx) {
     st->v[1] = *q1;
     st->v[2] = *q2;
     st->v[3] = sx[3];
-    st->nv = 4;
+    tetrahedron_state(st);
     const agjk_vec3 w1 = q1->w, w2 = q2->w, w3 = sx[3].w;
     agjk_vec3 e01 = swap ? e2 : e1, e02 = swap ? e1 : e2;
     double l01 = swap ? l2 : l1, l02 = swap ? l1 : l2;
-    double r0 = v3_maxabs(p0), r1 = v3_maxabs(w1), r2 = v3_maxabs(w2), r3 = v3_maxabs(w3);
-    const int ha = st->md->hint_a, hb = st->md->hint_b; /* as tetrahedron_faces */
-    st->vmax[0] = r0;
-    st->vmax[1] = r1;
-    st->vmax[2] = r2;
-    st->vmax[3] = r3;
-    st->vmark[0] = st->vmark[1] = st->vmark[2] = st->vmark[3] = 0;
-    st->hint_a[0] = st->hint_a[1] = st->hint_a[2] = st->hint_a[3] = ha;
-    st->hint_b[0] = st->hint_b[1] = st->hint_b[2] = st->hint_b[3] = hb;
-    st->f[0].mark = st->f[1].mark = st->f[2].mark = st->f[3].mark = 0;
-    for (int i = 0; i < 4; ++i) agjk__epa_scan_fresh(&st->scan, i);
-    st->nf = 4;
-    st->nfree = 0;
+    double r0 = st->vmax[0], r1 = st->vmax[1], r2 = st->vmax[2], r3 = st->vmax[3];
     /* Each face's plane from the same edges as tetrahedron_faces (tetra_tri:
      * from its first vertex to the next two), in the same order (the
      * nearest-face search lists them so); |v0 - v2|^2 = |e02|^2 exactly. */
