@@ -315,7 +315,8 @@ static AGJK__ALWAYS_INLINE int start_face(epa_state *st, int i, agjk_vec3 c, agj
 /* The per-vertex and per-face state of the tetrahedron st->v[0..3] (written
  * out: -O2 keeps four-pass loops with their index arithmetic). */
 static AGJK__ALWAYS_INLINE void tetrahedron_state(epa_state *st) {
-    const int ha = st->md->hint_a, hb = st->md->hint_b; /* the last call's: valid, if not the best */
+    /* The last call's hints: valid, if not the best. */
+    const int ha = st->md->hint_a, hb = st->md->hint_b;
     st->nv = 4;
     st->vmax[0] = v3_maxabs(st->v[0].w);
     st->vmax[1] = v3_maxabs(st->v[1].w);

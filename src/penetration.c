@@ -7,10 +7,6 @@
 #include "epa.h"
 #include "query_setup.h"
 
-static AGJK__ALWAYS_INLINE agjk_vec3 to_world(const agjk_pose *pose, agjk_vec3 p) {
-    return v3_add(m3_mul(&pose->rotation[0][0], p), pose->translation);
-}
-
 /* What EPA needs from GJK, in one place (the solver's internals may change):
  * the outcome, the final iterate with its certified core-distance interval,
  * and the final simplex. */
@@ -101,8 +97,10 @@ static agjk_status separated_cores(agjk_signed_result *result, const gjk_summary
     result->normal = m3_mul(&pose_a->rotation[0][0], g->normal);
     agjk_vec3 n = g->toward_x;
     if (witness) {
-        result->witness_a = to_world(pose_a, v3_add(v3_scale(g->a, inv), v3_scale(n, margin_a)));
-        result->witness_b = to_world(pose_a, v3_sub(v3_scale(g->b, inv), v3_scale(n, margin_b)));
+        agjk_vec3 wa = v3_add(v3_scale(g->a, inv), v3_scale(n, margin_a));
+        agjk_vec3 wb = v3_sub(v3_scale(g->b, inv), v3_scale(n, margin_b));
+        result->witness_a = agjk__to_world(pose_a, wa);
+        result->witness_b = agjk__to_world(pose_a, wb);
     }
     widen_after_rescale(result, md->scale);
     return finish(result, converged);
@@ -192,8 +190,8 @@ agjk_status agjk_signed_distance(const agjk_shape *a, const agjk_pose *pose_a,
             wa = v3_add(v3_scale(g.a, inv), v3_scale(n, margin_a));
             wb = v3_sub(v3_scale(g.b, inv), v3_scale(n, margin_b));
         }
-        result->witness_a = to_world(pose_a, wa);
-        result->witness_b = to_world(pose_a, wb);
+        result->witness_a = agjk__to_world(pose_a, wa);
+        result->witness_b = agjk__to_world(pose_a, wb);
     }
     widen_after_rescale(result, md.scale);
     return finish(result, eout.converged);

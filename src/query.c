@@ -5,10 +5,6 @@
 #include "agjk/query.h"
 #include "query_setup.h"
 
-static agjk_vec3 to_world(const agjk_pose *pose, agjk_vec3 p) {
-    return v3_add(m3_mul(&pose->rotation[0][0], p), pose->translation);
-}
-
 agjk_status agjk__query_run(const agjk_shape *a, const agjk_pose *pose_a, const agjk_shape *b,
                             const agjk_pose *pose_b, const agjk_options *options,
                             agjk_result *result, int boolean_mode, struct agjk_cache *cache,
@@ -47,7 +43,7 @@ agjk_status agjk__query_run(const agjk_shape *a, const agjk_pose *pose_a, const 
     double inv = 1.0 / md.scale;
     if (out.outcome == AGJK__INTERSECTING) {
         if (in.want_witness) {
-            agjk_vec3 mid = to_world(pose_a, v3_scale(v3_add(out.a, out.b), 0.5 * inv));
+            agjk_vec3 mid = agjk__to_world(pose_a, v3_scale(v3_add(out.a, out.b), 0.5 * inv));
             result->witness_a = mid;
             result->witness_b = mid;
         }
@@ -97,8 +93,8 @@ agjk_status agjk__query_run(const agjk_shape *a, const agjk_pose *pose_a, const 
         if (in.want_witness) {
             agjk_vec3 wa = v3_scale(v3_add(out.a, v3_scale(cb.toward_x, md.margin_a)), inv);
             agjk_vec3 wb = v3_scale(v3_sub(out.b, v3_scale(cb.toward_x, md.margin_b)), inv);
-            result->witness_a = to_world(pose_a, wa);
-            result->witness_b = to_world(pose_a, wb);
+            result->witness_a = agjk__to_world(pose_a, wa);
+            result->witness_b = agjk__to_world(pose_a, wb);
         }
     }
     return result->status = status;

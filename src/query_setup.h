@@ -15,6 +15,11 @@ int agjk__query_prepare(const agjk_shape *a, const agjk_pose *pose_a, const agjk
                         const agjk_pose *pose_b, const agjk_options *options,
                         agjk_options *opts, agjk__minkowski *md, agjk__solve_input *in);
 
+/* A point of A's frame in world frame (witness points). */
+static inline agjk_vec3 agjk__to_world(const agjk_pose *pose, agjk_vec3 p) {
+    return v3_add(m3_mul(&pose->rotation[0][0], p), pose->translation);
+}
+
 /* The certified interval on the core distance ||x*|| (solver units) after a
  * solve that ended with x != 0 (converged, capped, stalled, at rounding), and
  * the unit normal, in A's frame from A towards B, of the support plane that

@@ -176,8 +176,8 @@ static inline double fz_rotation_skew(const agjk_pose *p) {
     double m = 0.0;
     for (int i = 0; i < 3; i++)
         for (int j = 0; j < 3; j++) {
-            double e = p->rotation[i][0] * p->rotation[j][0] + p->rotation[i][1] * p->rotation[j][1] +
-                       p->rotation[i][2] * p->rotation[j][2] - (i == j ? 1.0 : 0.0);
+            const double *ri = p->rotation[i], *rj = p->rotation[j];
+            double e = ri[0] * rj[0] + ri[1] * rj[1] + ri[2] * rj[2] - (i == j ? 1.0 : 0.0);
             if (fabs(e) > m) m = fabs(e);
         }
     return m;
