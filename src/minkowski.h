@@ -110,6 +110,13 @@ static inline double agjk__minkowski_caller_granule(const agjk__minkowski *md) {
     return md->scale >= 0x1p52 ? (0x1p-537 * md->scale) * 0x1p-537 : 0.0;
 }
 
+/* What a certified lower bound on the distance (solver units, rounding taken
+ * off) must exceed to prove the shapes apart: the margins, plus a few caller
+ * granules so that it stays positive in the caller's units. */
+static inline double agjk__minkowski_separation_level(const agjk__minkowski *md) {
+    return md->margin + 4.0 * agjk__minkowski_caller_granule(md);
+}
+
 /* s = argmin_{s in D} <d, s> = S_A(-d) - S_B(d) (paper eq. 7-8), d in A's frame,
  * non-zero and finite, with the points of A and B it came from. */
 static AGJK__ALWAYS_INLINE void agjk__minkowski_support(agjk__minkowski *md, agjk_vec3 d,

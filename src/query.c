@@ -76,7 +76,7 @@ agjk_status agjk__query_run(const agjk_shape *a, const agjk_pose *pose_a, const 
     if (out.outcome == AGJK__AT_ROUNDING && !cb.inexact)
         status = AGJK_STATUS_CONTACT_WITHIN_TOLERANCE;
     else if (converged)
-        status = lower > md.margin + 4.0 * agjk__minkowski_caller_granule(&md)
+        status = lower > agjk__minkowski_separation_level(&md)
                      ? AGJK_STATUS_SEPARATED : AGJK_STATUS_CONTACT_WITHIN_TOLERANCE;
     else
         status = AGJK_STATUS_NOT_CONVERGED;

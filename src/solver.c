@@ -161,7 +161,7 @@ static int gap_separates(const solver *sv, double g) {
      * A bound that would vanish in the caller's units (a tolerance that is
      * huge for a tiny problem, met by a plane far from the best, found by
      * fuzzing) decides nothing: the plain steps of sign_pending tighten it. */
-    double r = sv->md->margin + 2.0 * sv->md->noise + 4.0 * agjk__minkowski_caller_granule(sv->md),
+    double r = agjk__minkowski_separation_level(sv->md) + 2.0 * sv->md->noise,
            t = 2.0 * sv->x2 - g;
     return t > 0.0 && t * t > 4.0 * sv->x2 * r * r;
 }
