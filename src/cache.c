@@ -339,8 +339,8 @@ void agjk__cache_save(agjk_cache *cache, const agjk_shape *a, const agjk_shape *
     int n = out->simplex_count < 0 ? 0 : out->simplex_count > 4 ? 4 : out->simplex_count;
     /* Curved shapes (no vertex met twice): unless it encloses the origin, the
      * next query starts from the direction alone (agjk__cache_load), so the
-     * simplex is not kept and its points are not recovered (a tenth of a
-     * warm query on ellipsoids). */
+     * simplex is not kept and its points are not recovered (fast motion on
+     * ellipsoids: 293 -> 277 ns per warm query). */
     if (!(cache->flags & AGJK_CACHE_FLAT) && n < 4 && v3_maxabs(cache->direction) > 0.0) n = 0;
     /* Back to B's local frame: R^T (b - t) (rounding of a few ulps, within the
      * tolerance warm_consistent allows, solver.c); but a vertex the solver
