@@ -112,12 +112,12 @@ agjk_status agjk_signed_distance(const agjk_shape *a, const agjk_pose *pose_a,
     if (!result) return AGJK_STATUS_INVALID_INPUT;
     memset(result, 0, sizeof *result);
     result->status = AGJK_STATUS_INVALID_INPUT;
-    agjk_options opts;
     agjk__minkowski md;
     agjk__solve_input in;
-    if (!agjk__query_prepare(a, pose_a, b, pose_b, options, &opts, &md, &in))
+    if (!agjk__query_prepare(a, pose_a, b, pose_b, options, &md, &in))
         return result->status;
-    int witness = (opts.compute & AGJK_COMPUTE_WITNESS) != 0;
+    int witness = in.want_witness;
+    double tolerance = in.tolerance; /* the caller's: GJK's may be tightened below */
     /* GJK runs on the cores: the margins (caller's units, md.scale is 1 here)
      * are added to the answer analytically, so that the solver neither stops
      * early when the cores come closer than the margins nor loses the simplex. */
@@ -140,7 +140,7 @@ agjk_status agjk_signed_distance(const agjk_shape *a, const agjk_pose *pose_a,
      * last iterate with a proportionally tighter tolerance (twice at most). */
     for (int round = 0; !g.intersecting && g.core_lower > 0.0; ++round) {
         double lo = g.core_lower - margin * md.scale, hi = g.core_upper - margin * md.scale;
-        double target = agjk__epa_target(in.relative, opts.tolerance, md.scale, lo, hi,
+        double target = agjk__epa_target(in.relative, tolerance, md.scale, lo, hi,
                                          in.relative ? 0.0 : agjk__epa_floor(&md));
         /* Without margins, exactly agjk_distance's verdict; with margins, the
          * certified width decides. */
@@ -162,10 +162,10 @@ agjk_status agjk_signed_distance(const agjk_shape *a, const agjk_pose *pose_a,
     ein.simplex = g.simplex;
     ein.count = g.count;
     ein.relative = in.relative;
-    ein.tolerance = opts.tolerance;
+    ein.tolerance = tolerance;
     ein.margin = margin;
     ein.core_distance_upper = g.core_upper;
-    ein.max_iterations = opts.max_iterations;
+    ein.max_iterations = in.max_iterations;
     ein.want_witness = witness;
     agjk__epa_output eout;
     agjk__epa(&md, &ein, &eout);

@@ -1,7 +1,5 @@
 /* SPDX-License-Identifier: MIT */
 /* Argument checks and solver setup shared by the public queries. */
-#include <string.h>
-
 #include "agjk/query.h"
 #include "query_setup.h"
 
@@ -9,41 +7,47 @@ static int shape_is_valid(const agjk_shape *shape) {
     return shape && shape->support && shape->margin >= 0.0 && shape->margin <= AGJK_MAX_COORDINATE;
 }
 
-/* Reads the caller's options, whatever version of agjk_options it compiled
- * against: fields past its struct_size keep their defaults. */
-static int read_options(const agjk_options *given, agjk_options *opts) {
-    if (!given) {
-        agjk_options_init_sized(opts, sizeof *opts);
-        return 1;
-    }
+/* Reads the caller's options (or the defaults for NULL) into the solver
+ * input and the starting hints, straight from the caller's struct: no copy of
+ * it, whatever version of agjk_options the caller compiled against. */
+static int read_options(const agjk_options *o, agjk__solve_input *in, int *hint_a, int *hint_b) {
+    if (!o) o = &agjk__default_options;
     /* Every field of this version is required (struct_size covers them all):
      * an older, smaller struct would need its missing fields defaulted here. */
-    if (given->struct_size < sizeof(agjk_options)) return 0; /* uninitialised or too old */
-    memcpy(opts, given, sizeof *opts);
-    opts->struct_size = (uint32_t)sizeof *opts;
-    switch (opts->method) {
+    else if (o->struct_size < sizeof(agjk_options)) return 0; /* uninitialised or too old */
+    switch (o->method) {
     case AGJK_METHOD_GJK: case AGJK_METHOD_NESTEROV: case AGJK_METHOD_NESTEROV_NORMALIZED:
     case AGJK_METHOD_POLYAK: case AGJK_METHOD_FRANK_WOLFE: case AGJK_METHOD_ADAPTIVE: break;
     default: return 0;
     }
-    if (opts->tolerance_mode != AGJK_TOLERANCE_ABSOLUTE &&
-        opts->tolerance_mode != AGJK_TOLERANCE_RELATIVE)
+    if (o->tolerance_mode != AGJK_TOLERANCE_ABSOLUTE &&
+        o->tolerance_mode != AGJK_TOLERANCE_RELATIVE)
         return 0;
-    if (!isfinite(opts->tolerance) || !(opts->tolerance > 0.0)) return 0;
-    if (opts->max_iterations < 1) return 0;
-    if ((opts->compute & ~(uint32_t)AGJK_COMPUTE_WITNESS) != 0) return 0;
-    if (opts->use_initial_direction && !v3_isfinite(opts->initial_direction)) return 0;
+    /* (NaN fails the comparison; the upper limit rejects +Inf.) */
+    if (!(o->tolerance > 0.0 && o->tolerance <= DBL_MAX)) return 0;
+    if (o->max_iterations < 1) return 0;
+    if ((o->compute & ~(uint32_t)AGJK_COMPUTE_WITNESS) != 0) return 0;
+    in->x0_given = o->use_initial_direction != 0;
+    if (in->x0_given && !v3_isfinite(o->initial_direction)) return 0;
+    in->method = o->method;
+    in->want_witness = (o->compute & AGJK_COMPUTE_WITNESS) != 0;
+    in->relative = o->tolerance_mode == AGJK_TOLERANCE_RELATIVE;
+    in->tolerance = o->tolerance;
+    in->max_iterations = o->max_iterations;
+    in->x0 = o->initial_direction; /* world frame until initial_guess */
+    *hint_a = o->hint_a;
+    *hint_b = o->hint_b;
     return 1;
 }
 
-/* x_0: the caller's guess, else c_A - c_B (the frame origins, paper Sec. IV),
- * else any axis when the shapes are concentric (where c_A - c_B = 0 would give
- * no direction at all). */
-static agjk_vec3 initial_guess(const agjk_options *opts, const agjk_pose *pose_a,
+/* x_0: the caller's guess (in->x0, world frame, when in->x0_given), else
+ * c_A - c_B (the frame origins, paper Sec. IV), else any axis when the
+ * shapes are concentric (where c_A - c_B = 0 would give no direction at all). */
+static agjk_vec3 initial_guess(const agjk__solve_input *in, const agjk_pose *pose_a,
                                const agjk__minkowski *md) {
     agjk_vec3 x0 = v3_neg(md->translation);
-    if (opts->use_initial_direction) {
-        x0 = m3_tmul(&pose_a->rotation[0][0], opts->initial_direction);
+    if (in->x0_given) {
+        x0 = m3_tmul(&pose_a->rotation[0][0], in->x0);
         /* Only its direction and rough size matter (it seeds the momentum):
          * bring an absurdly tiny or huge guess to unit length. */
         double m = v3_maxabs(x0);
@@ -56,20 +60,15 @@ static agjk_vec3 initial_guess(const agjk_options *opts, const agjk_pose *pose_a
 
 int agjk__query_prepare(const agjk_shape *a, const agjk_pose *pose_a, const agjk_shape *b,
                         const agjk_pose *pose_b, const agjk_options *options,
-                        agjk_options *opts, agjk__minkowski *md, agjk__solve_input *in) {
-    if (!read_options(options, opts) || !shape_is_valid(a) || !shape_is_valid(b) ||
-        !agjk__pose_is_valid(pose_a) || !agjk__pose_is_valid(pose_b))
+                        agjk__minkowski *md, agjk__solve_input *in) {
+    int hint_a, hint_b;
+    if (!read_options(options, in, &hint_a, &hint_b) || !shape_is_valid(a) ||
+        !shape_is_valid(b) || !agjk__pose_is_valid(pose_a) || !agjk__pose_is_valid(pose_b))
         return 0;
-    agjk__minkowski_init(md, a, pose_a, b, pose_b, opts->hint_a, opts->hint_b);
+    agjk__minkowski_init(md, a, pose_a, b, pose_b, hint_a, hint_b);
     if (!isfinite(md->margin)) return 0;
-    in->method = opts->method;
     in->boolean_mode = 0;
-    in->want_witness = (opts->compute & AGJK_COMPUTE_WITNESS) != 0;
-    in->relative = opts->tolerance_mode == AGJK_TOLERANCE_RELATIVE;
-    in->tolerance = opts->tolerance;
-    in->max_iterations = opts->max_iterations;
-    in->x0 = initial_guess(opts, pose_a, md);
-    in->x0_given = opts->use_initial_direction != 0;
+    in->x0 = initial_guess(in, pose_a, md);
     in->keep_points = in->want_witness;
     in->track_flat = 0;
     in->want_simplex = 0;

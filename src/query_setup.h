@@ -6,14 +6,17 @@
 
 #include "solver.h"
 
-/* Checks the arguments (shapes, poses, options of any caller version) and, when
- * they are valid, fills *opts (the caller's options, or the defaults), *md (the
- * relative transform) and *in (the solver input for a distance query: no
- * Boolean exit, witness points as opts->compute asks). Returns 0 for invalid
- * input, with nothing computed. */
+/* What agjk_options_init gives (options.c); a NULL options pointer means these. */
+extern const agjk_options agjk__default_options;
+
+/* Checks the arguments (shapes, poses, options of any caller version: NULL
+ * for the defaults) and, when they are valid, fills *md (the relative
+ * transform) and *in (the solver input for a distance query: the options'
+ * method, tolerance, cap and witness flag, x_0, no Boolean exit). Returns 0
+ * for invalid input. */
 int agjk__query_prepare(const agjk_shape *a, const agjk_pose *pose_a, const agjk_shape *b,
                         const agjk_pose *pose_b, const agjk_options *options,
-                        agjk_options *opts, agjk__minkowski *md, agjk__solve_input *in);
+                        agjk__minkowski *md, agjk__solve_input *in);
 
 /* A point of A's frame in world frame (witness points). */
 static inline agjk_vec3 agjk__to_world(const agjk_pose *pose, agjk_vec3 p) {
