@@ -263,8 +263,8 @@ int agjk__cache_load(const agjk_cache *cache, const agjk_shape *a, const agjk_sh
 }
 
 /* How far R^T R is from the identity (R: B's frame -> A's frame, the
- * product of the two poses' rotations, each orthonormal only to within
- * 1e-6): the largest |(R^T R - I)_ij|. R^T then inverts R only to within it. */
+ * product of the two poses' rotations, each orthonormal only to within a
+ * few 1e-6): the largest |(R^T R - I)_ij|. R^T then inverts R only to within it. */
 static double rotation_skew(const double *r) {
     agjk_vec3 c0 = v3(r[0], r[3], r[6]), c1 = v3(r[1], r[4], r[7]), c2 = v3(r[2], r[5], r[8]);
     double e[6] = {v3_norm2(c0) - 1.0, v3_norm2(c1) - 1.0, v3_norm2(c2) - 1.0,

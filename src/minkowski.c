@@ -9,23 +9,19 @@
 int agjk__pose_is_valid(const agjk_pose *pose) {
     if (!pose || !v3_in_range(pose->translation)) return 0;
     const double *r = &pose->rotation[0][0]; /* row-major, r[3 * row + column] */
-    /* R R^T = I: the six distinct entries. Written so that NaN or Inf (which
-     * fail every comparison) are rejected by the same tests. */
-    double r00 = r[0] * r[0] + r[1] * r[1] + r[2] * r[2];
-    double r11 = r[3] * r[3] + r[4] * r[4] + r[5] * r[5];
-    double r22 = r[6] * r[6] + r[7] * r[7] + r[8] * r[8];
-    double r01 = r[0] * r[3] + r[1] * r[4] + r[2] * r[5];
-    double r02 = r[0] * r[6] + r[1] * r[7] + r[2] * r[8];
-    double r12 = r[3] * r[6] + r[4] * r[7] + r[5] * r[8];
-    if (!(fabs(r00 - 1.0) <= ROTATION_TOLERANCE && fabs(r11 - 1.0) <= ROTATION_TOLERANCE &&
-          fabs(r22 - 1.0) <= ROTATION_TOLERANCE && fabs(r01) <= ROTATION_TOLERANCE &&
-          fabs(r02) <= ROTATION_TOLERANCE && fabs(r12) <= ROTATION_TOLERANCE))
-        return 0;
-    /* det R = +1 (a reflection would turn the shapes inside out): with
-     * orthonormal rows, det = <row 2, row 0 x row 1> is +-1. */
-    double det = r[6] * (r[1] * r[5] - r[2] * r[4]) + r[7] * (r[2] * r[3] - r[0] * r[5]) +
-                 r[8] * (r[0] * r[4] - r[1] * r[3]);
-    return det > 0.0;
+    agjk_vec3 x = v3(r[0], r[1], r[2]), y = v3(r[3], r[4], r[5]), z = v3(r[6], r[7], r[8]);
+    /* A rotation: rows x and y orthonormal, and z = x cross y (which makes
+     * z orthonormal to both and det R = +1, where a reflection, det -1, would
+     * turn the shapes inside out). Cheaper than the six entries of R R^T and
+     * the determinant (27 floating-point operations against 44, twice per
+     * query), and as strict: within 1e-6 per entry, z is within about 1e-6
+     * of a unit vector orthogonal to x and y. Every test is a comparison, so
+     * NaN and Inf fail them too. */
+    agjk_vec3 e = v3_sub(v3_cross(x, y), z);
+    return fabs(v3_dot(x, x) - 1.0) <= ROTATION_TOLERANCE &&
+           fabs(v3_dot(y, y) - 1.0) <= ROTATION_TOLERANCE &&
+           fabs(v3_dot(x, y)) <= ROTATION_TOLERANCE && fabs(e.x) <= ROTATION_TOLERANCE &&
+           fabs(e.y) <= ROTATION_TOLERANCE && fabs(e.z) <= ROTATION_TOLERANCE;
 }
 
 /* Limits of the common support path for the current scale (see agjk__minkowski). */

@@ -45,7 +45,8 @@ typedef struct agjk__minkowski {
     double rescaled;
 } agjk__minkowski;
 
-/* Checks a pose: finite, rotation orthonormal with det +1 (to 1e-6). */
+/* Checks a pose: translation in range, rotation orthonormal with det +1
+ * (rows 0 and 1 orthonormal, row 2 their cross product, to 1e-6). */
 int agjk__pose_is_valid(const agjk_pose *pose);
 
 /* Prepares the relative transform. Shapes and poses must have been validated. */
