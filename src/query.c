@@ -56,7 +56,7 @@ agjk_status agjk__query_run(const agjk_shape *a, const agjk_pose *pose_a, const 
     if (out.outcome == AGJK__BAD_SUPPORT) return result->status = AGJK_STATUS_INVALID_INPUT;
     /* The solver worked in units scaled by md.scale (a power of two): back to
      * the caller's. */
-    double inv = 1.0 / md.scale;
+    double inv = md.scale == 1.0 ? 1.0 : 1.0 / md.scale; /* (no division in the usual case) */
     if (out.outcome == AGJK__INTERSECTING) {
         if (in.want_witness) {
             agjk_vec3 mid = agjk__to_world(pose_a, v3_scale(v3_add(out.a, out.b), 0.5 * inv));

@@ -77,7 +77,7 @@ int agjk__query_prepare(const agjk_shape *a, const agjk_pose *pose_a, const agjk
 }
 
 void agjk__core_bounds_of(const agjk__solve_output *out, agjk__core_bounds *b) {
-    double core = v3_norm(out->x);
+    double x2 = v3_norm2(out->x), core = sqrt(x2);
     double gap = out->gap_valid && out->gap > 0.0 ? out->gap : 0.0;
     /* The rounding of x and of the support points (the relative transform, the
      * combination of simplex vertices): the exact point of D that x stands for
@@ -104,8 +104,11 @@ void agjk__core_bounds_of(const agjk__solve_output *out, agjk__core_bounds *b) {
     double reach = core + out->noise, member2 = v3_norm2(out->x_member);
     b->inexact = member2 > reach * reach;
     b->upper = (b->inexact ? sqrt(member2) : core) + rounding;
-    /* From A towards B; v3_normalize copes with a denormal x (zero stays zero). */
-    b->toward_x = v3_normalize(v3_neg(out->x));
+    /* From A towards B: v3_normalize(-x), with the square root already
+     * taken in its usual range; v3_normalize itself copes with a denormal x
+     * (zero stays zero). */
+    b->toward_x = x2 >= 0x1p-900 && x2 <= 0x1p900 ? v3_scale(v3_neg(out->x), 1.0 / core)
+                                                  : v3_normalize(v3_neg(out->x));
     /* The plane that certified the lower bound: -x, or the support direction
      * the adaptive method stopped on (solver.c). */
     b->normal = v3_maxabs(out->direction) > 0.0 ? v3_normalize(v3_neg(out->direction))
