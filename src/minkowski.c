@@ -91,12 +91,13 @@ static void apply_factor(agjk__minkowski *md, double f) {
     set_limits(md);
 }
 
-/* 2^-floor(log2(size)), clamped so that the factor and its inverse stay finite. */
+/* 2^-floor(log2(size)), clamped to [2^-1000, 2^1000] so that the factor and
+ * its inverse stay finite; by exponent arithmetic (pow2_inverse_floor), which
+ * is 0 only beyond the clamp (size denormal, or at least 2^1023). */
 static double unit_factor(double size) {
-    int e = -ilogb(size);
-    if (e > 1000) e = 1000;
-    if (e < -1000) e = -1000;
-    return ldexp(1.0, e);
+    double f = pow2_inverse_floor(size);
+    if (f == 0.0) return size < 1.0 ? 0x1p1000 : 0x1p-1000;
+    return f > 0x1p1000 ? 0x1p1000 : (f < 0x1p-1000 ? 0x1p-1000 : f);
 }
 
 double agjk__minkowski_rescale_extreme(agjk__minkowski *md, double size) {
