@@ -3,12 +3,9 @@
  * signs match the direction. */
 #include "shape_common.h"
 
-static void box_support(const void *data, const agjk_vec3 *direction, agjk_vec3 *out, int *hint) {
-    const agjk_box *b = (const agjk_box *)data;
+void agjk__box_support(const void *data, const agjk_vec3 *direction, agjk_vec3 *out, int *hint) {
     (void)hint;
-    *out = v3(signed_extent(b->half_extents.x, direction->x),
-              signed_extent(b->half_extents.y, direction->y),
-              signed_extent(b->half_extents.z, direction->z));
+    *out = agjk__box_point((const agjk_box *)data, *direction);
 }
 
 agjk_status agjk_shape_box(agjk_shape *shape, const agjk_box *box) {
@@ -16,5 +13,5 @@ agjk_status agjk_shape_box(agjk_shape *shape, const agjk_box *box) {
     agjk_vec3 h = box->half_extents;
     if (!size_is_valid(h.x) || !size_is_valid(h.y) || !size_is_valid(h.z))
         return AGJK_STATUS_INVALID_INPUT;
-    return shape_fill(shape, box_support, box, 0.0);
+    return shape_fill(shape, agjk__box_support, box, 0.0);
 }

@@ -3,25 +3,15 @@
  * D^2 d / ||D d|| with D = diag(r). */
 #include "shape_common.h"
 
-static void ellipsoid_support(const void *data, const agjk_vec3 *direction, agjk_vec3 *out,
-                              int *hint) {
+void agjk__ellipsoid_support(const void *data, const agjk_vec3 *direction, agjk_vec3 *out,
+                             int *hint) {
     const agjk_ellipsoid *e = (const agjk_ellipsoid *)data;
     (void)hint;
-    agjk_vec3 r = e->radii, d = *direction;
-    agjk_vec3 dd = v3(r.x * d.x, r.y * d.y, r.z * d.z);
-    double n2 = v3_norm2(dd);
-    /* The common case: ||D d||^2 far from underflow and overflow, so one
-     * square root and one division. (Power-of-two scalings of d or of the
-     * radii scale every step exactly: answers stay bit-equivariant.) */
-    if (n2 >= 0x1p-900 && n2 <= 0x1p900) {
-        double inv = 1.0 / sqrt(n2);
-        *out = v3(r.x * dd.x * inv, r.y * dd.y * inv, r.z * dd.z * inv);
-        return;
-    }
+    if (agjk__ellipsoid_point(e, *direction, out)) return; /* the common case */
     /* Tiny or huge directions, or stiff radii spanning many orders: rescale d,
      * then D d, before taking norms (the result does not depend on |d|). */
-    d = v3_div(d, v3_maxabs(d));
-    dd = v3(r.x * d.x, r.y * d.y, r.z * d.z);
+    agjk_vec3 r = e->radii, d = v3_div(*direction, v3_maxabs(*direction));
+    agjk_vec3 dd = v3(r.x * d.x, r.y * d.y, r.z * d.z);
     agjk_vec3 ddn = v3_div(dd, v3_maxabs(dd));
     double norm = v3_norm(ddn);
     *out = v3(r.x * ddn.x / norm, r.y * ddn.y / norm, r.z * ddn.z / norm);
@@ -32,5 +22,5 @@ agjk_status agjk_shape_ellipsoid(agjk_shape *shape, const agjk_ellipsoid *ellips
     agjk_vec3 r = ellipsoid->radii;
     if (!v3_in_range(r) || !(r.x > 0.0) || !(r.y > 0.0) || !(r.z > 0.0))
         return AGJK_STATUS_INVALID_INPUT;
-    return shape_fill(shape, ellipsoid_support, ellipsoid, 0.0);
+    return shape_fill(shape, agjk__ellipsoid_support, ellipsoid, 0.0);
 }

@@ -74,11 +74,13 @@ static AGJK__NOINLINE AGJK__COLD void follow_rescale(solver *sv, agjk_vec3 *d) {
 /* One Minkowski support in direction d (s in the current units): inline for
  * the loop's own call, out of line for the rare ones (momentum switch-off,
  * final certification), so that the support path is expanded once. */
-static AGJK__ALWAYS_INLINE void support(solver *sv, agjk_vec3 *d, agjk__vertex *s) {
-    agjk__minkowski_support(sv->md, *d, s);
+static AGJK__ALWAYS_INLINE void support(solver *sv, agjk_vec3 *d, agjk__vertex *s, int direct) {
+    agjk__minkowski_support(sv->md, *d, s, direct);
     if (sv->md->rescaled != 1.0) follow_rescale(sv, d);
 }
-static AGJK__NOINLINE void support_rare(solver *sv, agjk_vec3 *d, agjk__vertex *s) { support(sv, d, s); }
+static AGJK__NOINLINE void support_rare(solver *sv, agjk_vec3 *d, agjk__vertex *s) {
+    support(sv, d, s, 0);
+}
 
 /* Alg. 2: the plane of normal d through s separates D (inflated by the margins)
  * from the origin when <d, s> > ||d|| (margin + rounding): squared, with no
@@ -604,7 +606,7 @@ static void first_support(solver *sv, agjk__vertex *s, agjk__solve_output *out) 
     agjk_vec3 x = sv->in->x0;
     /* The problem's size is not known yet: give the callbacks a unit-size
      * direction (exact power-of-two scaling of x_0). */
-    agjk__minkowski_support(md, v3_scale_to_unit(x, v3_maxabs(x)), s);
+    agjk__minkowski_support(md, v3_scale_to_unit(x, v3_maxabs(x)), s, 1);
     ++out->support_calls;
     /* A shrink during that first call already put s in new units; x_0, given
      * in the caller's units, needs it too. */
@@ -747,7 +749,7 @@ void agjk__solve(agjk__minkowski *md, const agjk__solve_input *in, agjk__solve_o
         agjk_vec3 d = k == 0 ? d0 : sv.x;
         if (k > 0) {
             if (sv.m.active) d = agjk__momentum_direction(&sv.m, k, sv.x);
-            support(&sv, &d, &s);
+            support(&sv, &d, &s, 1);
             ++out->support_calls;
             if (support_ends_query(&sv, d, &s, out)) break;
         }

@@ -1,0 +1,54 @@
+/* SPDX-License-Identifier: MIT */
+/* Internal: the support points of the simplest built-in shapes, inline, for
+ * their callbacks (shape_*.c) and for the Minkowski support, which computes
+ * them in place of the call through the pointer (minkowski.h): one body, so
+ * both give the same bits. */
+#ifndef AGJK_SRC_SHAPE_POINTS_H
+#define AGJK_SRC_SHAPE_POINTS_H
+
+#include "agjk/shapes.h"
+#include "vec3.h"
+
+/* The extent h >= 0 of a box-like support with the sign of d: +h for
+ * d >= +0, -h for d < 0 or -0 (any choice maximises when d == 0). A branch,
+ * not copysign: predicted, it lets the support point be formed before d is
+ * known, which shortens GJK's chain of dependent steps (measured on close
+ * boxes: copysign took 8% more time per query for 4% fewer instructions). */
+static inline double signed_extent(double h, double d) { return signbit(d) ? -h : h; }
+
+/* Axis-aligned box centred at the origin: the corner whose signs match d. */
+static inline agjk_vec3 agjk__box_point(const agjk_box *b, agjk_vec3 d) {
+    return v3(signed_extent(b->half_extents.x, d.x), signed_extent(b->half_extents.y, d.y),
+              signed_extent(b->half_extents.z, d.z));
+}
+
+/* Capsule core: the segment z in [-h, h]. */
+static inline agjk_vec3 agjk__segment_point(const agjk_capsule *c, agjk_vec3 d) {
+    return v3(0.0, 0.0, signed_extent(c->half_height, d.z));
+}
+
+/* Ellipsoid {p : sum (p_i / r_i)^2 <= 1}: D^2 d / ||D d|| with D = diag(r),
+ * when ||D d||^2 lies far from underflow and overflow (the common case: one
+ * square root and one division). Returns 0, with nothing written, otherwise
+ * (tiny or huge directions, stiff radii: shape_ellipsoid.c rescales first).
+ * Power-of-two scalings of d or of the radii scale every step exactly, so
+ * answers stay bit-equivariant. */
+static inline int agjk__ellipsoid_point(const agjk_ellipsoid *e, agjk_vec3 d, agjk_vec3 *out) {
+    agjk_vec3 r = e->radii;
+    agjk_vec3 dd = v3(r.x * d.x, r.y * d.y, r.z * d.z);
+    double n2 = v3_norm2(dd);
+    if (!(n2 >= 0x1p-900 && n2 <= 0x1p900)) return 0;
+    double inv = 1.0 / sqrt(n2);
+    *out = v3(r.x * dd.x * inv, r.y * dd.y * inv, r.z * dd.z * inv);
+    return 1;
+}
+
+/* The callbacks of these shapes (shape_*.c). */
+void agjk__point_support(const void *data, const agjk_vec3 *direction, agjk_vec3 *out, int *hint);
+void agjk__box_support(const void *data, const agjk_vec3 *direction, agjk_vec3 *out, int *hint);
+void agjk__segment_support(const void *data, const agjk_vec3 *direction, agjk_vec3 *out,
+                           int *hint);
+void agjk__ellipsoid_support(const void *data, const agjk_vec3 *direction, agjk_vec3 *out,
+                             int *hint);
+
+#endif
