@@ -42,7 +42,8 @@ typedef struct solver {
     double abs_tolerance; /* absolute mode: the tolerance in solver units squared */
     double lie_factor;    /* a gap below -lie_factor ||x|| noise proves a lying support */
     int sign_budget;      /* iterations left to decide the sign after the tolerance */
-    int seek_sign;        /* sign_pending asked for plain steps from the next iteration */
+    int plain_next;       /* plain steps from the next iteration (sign_pending, or a
+                           * retried support) */
 } solver;
 
 /* After a support that had to lower the scale (agjk__minkowski_rescue_points),
@@ -202,8 +203,8 @@ static int gap_separates(const solver *sv, double g) {
 static int sign_pending(solver *sv, double g, int k) {
     if (sv->sign_budget <= 0 || k + 1 >= sv->in->max_iterations || gap_separates(sv, g)) return 0;
     --sv->sign_budget;
-    sv->seek_sign = 1; /* momentum off at the end of this iteration, not before:
-                        * this iteration's support may still be a momentum one */
+    sv->plain_next = 1; /* momentum off at the end of this iteration, not before:
+                         * this iteration's support may still be a momentum one */
     return 1;
 }
 
@@ -808,7 +809,7 @@ void agjk__solve(agjk__minkowski *md, const agjk__solve_input *in, agjk__solve_o
     int adaptive = in->method == AGJK_METHOD_ADAPTIVE;
     int stalled = 0;     /* consecutive iterations without progress */
     sv.sign_budget = SIGN_SEEK_ITERATIONS;
-    sv.seek_sign = 0;
+    sv.plain_next = 0;
     for (int k = 0; k < in->max_iterations; ++k) {
         out->iterations = k + 1;
         agjk_vec3 d = k == 0 ? d0 : sv.x;
@@ -817,6 +818,19 @@ void agjk__solve(agjk__minkowski *md, const agjk__solve_input *in, agjk__solve_o
             support(&sv, &d, &s);
             ++out->support_calls;
             if (support_ends_query(&sv, d, &s, out)) break;
+            /* Adaptive method: a first momentum support that found s_0 again
+             * (the simplex's one point, bit for bit) told nothing; once, in
+             * another direction (direction.c, agjk__momentum_retry). Its own
+             * plane is dropped: only the retried one is recorded. */
+            if (k == 1 && sv.m.phase == AGJK__PHASE_POLYAK && sv.m.active && sv.count == 1 &&
+                s.w.x == sv.w[0].x && s.w.y == sv.w[0].y && s.w.z == sv.w[0].z &&
+                sv.m.plane <= 0.0 && !parallel(d, sv.x)) {
+                d = agjk__momentum_retry(&sv.m, sv.x);
+                support_rare(&sv, &d, &s);
+                ++out->support_calls;
+                if (support_ends_query(&sv, d, &s, out)) break;
+                sv.plain_next = 1;
+            }
         }
         if (warm) {
             /* A support plane that cuts off a cached point proves the cache
@@ -978,7 +992,7 @@ void agjk__solve(agjk__minkowski *md, const agjk__solve_input *in, agjk__solve_o
             sv.m.d_prev = d;
             sv.m.s_prev = s.w;
         }
-        if (sv.seek_sign && sv.m.active) {
+        if (sv.plain_next && sv.m.active) {
             sv.m.active = 0;
             out->momentum_stop = k;
         }
