@@ -42,7 +42,8 @@ typedef struct solver {
     double abs_tolerance; /* absolute mode: the tolerance in solver units squared */
     double lie_factor;    /* a gap below -lie_factor ||x|| noise proves a lying support */
     int sign_budget;      /* iterations left to decide the sign after the tolerance */
-    int seek_sign;        /* sign_pending asked for plain steps from the next iteration */
+    int plain_next;       /* plain steps from the next iteration (sign_pending, or a
+                           * retried support) */
 } solver;
 
 /* After a support that had to lower the scale (agjk__minkowski_rescue_points),
@@ -189,13 +190,23 @@ static int gap_separates(const solver *sv, double g) {
  * budget decides: an ellipsoid pair at distance 0 takes 23.2 support calls
  * instead of 11.8 (ellipsoid and box: 21.4 instead of 11.0; a sphere on a
  * box, 6 instead of 4); budgets of 8 and 16 cost 15.0 and 18.1 there.
+ * The budget counts these tests, not iterations: one per iteration for the
+ * fixed methods (the gap test), up to three for the adaptive method (its
+ * plane test before and after the simplex update, and the gap test), which
+ * so gets about a dozen plain iterations (32 tests in 12 iterations on the
+ * configuration of settle_overlap). Counting iterations instead decides
+ * more nearly touching pairs, but at a price where nothing decides
+ * (ellipsoids of the paper's law, 300 pairs per distance, adaptive method:
+ * 18.6 -> 37.7 support calls at distance 0; 1e-9 times their scale apart
+ * 17.4 -> 23.9, separated 53 -> 297 of 300); settle_overlap decides the
+ * overlapping ones for fewer.
  * Returns 1 when the loop must go on (and spends one of the budget). */
 #define SIGN_SEEK_ITERATIONS 32
 static int sign_pending(solver *sv, double g, int k) {
     if (sv->sign_budget <= 0 || k + 1 >= sv->in->max_iterations || gap_separates(sv, g)) return 0;
     --sv->sign_budget;
-    sv->seek_sign = 1; /* momentum off at the end of this iteration, not before:
-                        * this iteration's support may still be a momentum one */
+    sv->plain_next = 1; /* momentum off at the end of this iteration, not before:
+                         * this iteration's support may still be a momentum one */
     return 1;
 }
 
@@ -310,8 +321,8 @@ static AGJK__COLD int deep_inside(const agjk_vec3 *p, int n, double noise, agjk_
     return planes > 0;
 }
 
-/* Points certify_overlap may hold: the simplex (2-4 points) and the supports
- * it adds, up to 6. */
+/* Points certify_overlap may hold: the simplex (2-4 points), a support the
+ * caller already has, and the supports it adds. */
 #define CERTIFY_POINTS 8
 
 /* The origin in the active set, or within rounding of it, but not certified
@@ -322,15 +333,23 @@ static AGJK__COLD int deep_inside(const agjk_vec3 *p, int n, double noise, agjk_
  * shallow faces, then beyond any plane the test finds shallow), until the
  * test passes, a support shows D itself is shallow there (the origin is near
  * its boundary: touching to rounding), or there is room for no more points.
- * Rare, so out of line; at most CERTIFY_POINTS - 2 supports. Returns 1 when
- * certified (0 also after a bad support or a rescale: the caller then answers
- * what it has). */
-static AGJK__NOINLINE AGJK__COLD int certify_overlap(solver *sv, agjk__solve_output *out) {
+ * Rare, so out of line; at most CERTIFY_POINTS - 2 supports. `known`, when
+ * not NULL, is a point of D beyond a triangle's plane that the caller found
+ * already (S_D(x), x the triangle's projection): it stands for the support
+ * on its side. Returns 1 when certified (0 also after a bad support or a
+ * rescale: the caller then answers what it has). */
+static AGJK__NOINLINE AGJK__COLD int certify_overlap(solver *sv, agjk__solve_output *out,
+                                                   const agjk_vec3 *known) {
     agjk_vec3 p[CERTIFY_POINTS], dirs[4];
     int n = sv->count, nd = 0;
     double noise = sv->md->noise, scale = sv->md->scale;
     for (int i = 0; i < n; ++i) p[i] = sv->w[i];
-    if (n == 2) {
+    if (n == 3 && known) {
+        /* The other side of the triangle only. */
+        agjk_vec3 c = v3_cross(v3_sub(p[1], p[0]), v3_sub(p[2], p[0]));
+        dirs[nd++] = v3_dot(c, v3_sub(*known, p[0])) > 0.0 ? v3_neg(c) : c;
+        p[n++] = *known;
+    } else if (n == 2) {
         /* Two directions across the segment. */
         agjk_vec3 u = v3_sub(p[1], p[0]);
         agjk_vec3 ax = fabs(u.x) <= fabs(u.y) && fabs(u.x) <= fabs(u.z) ? v3(1.0, 0.0, 0.0)
@@ -382,6 +401,54 @@ static AGJK__NOINLINE AGJK__COLD int certify_overlap(solver *sv, agjk__solve_out
     }
     agjk_vec3 unused;
     return deep_inside(p, n, noise, &unused);
+}
+
+/* The loop is about to answer "contact within tolerance": a gap g at x that
+ * meets the tolerance (or the floor) and decides no sign. Right for shapes
+ * that touch, but overlapping ones can end so too: with the origin a hair
+ * inside D (two ellipsoids of size 1 overlapping by 1.5e-6) and the
+ * simplex's vertices a thousand times farther out, plain GJK keeps landing
+ * on triangles that pass near the origin, ||x|| shrinks by a constant factor
+ * per step, and sign_pending's budget runs out first; a warm-started query
+ * of the same problem, which starts elsewhere, encloses the origin and
+ * answers "intersecting" (coherent-motion benchmark, fast ellipsoids, 1 of
+ * 4000 steps). A certificate withheld: when the gap's lower bound ||x|| -
+ * g / (2 ||x||) is not positive (2 ||x||^2 <= g; a positive one shows the
+ * origin outside D), certify_overlap tries a few supports beyond the simplex
+ * (there, 2 after the loop's 19). Its price falls on shapes that touch
+ * within the tolerance, once per query and at most 5 supports: measured on
+ * ellipsoid pairs of the paper's law (300 per distance, tolerance 1e-8),
+ * support calls of the adaptive method at distance 0 went from 18.6 to 23.2
+ * (GJK: 49.1 to 52.8), at 1e-9 times their scale apart from 17.4 to 21.1
+ * (no status changed there), and at 1e-9, 1e-7 and 1e-6 deep the overlaps
+ * certified rose from 7, 159, 282 to 47, 246, 299 of 300; the paper's
+ * protocol (23400 problems) never reaches it: no status and no support count
+ * changed. Returns 1 when the query ends here, with out->outcome set
+ * (intersecting, or a bad support); else 0 with g in the solver's units,
+ * which certify_overlap's supports may have changed (a rescale, by a power
+ * of two: exact). */
+static AGJK__NOINLINE AGJK__COLD int settle_overlap(solver *sv, agjk__solve_output *out,
+                                                  double *g, const agjk_vec3 *known) {
+    double scale = sv->md->scale;
+    if (certify_overlap(sv, out, known)) {
+        out->outcome = AGJK__INTERSECTING;
+        return 1;
+    }
+    if (sv->md->bad_support) {
+        out->outcome = AGJK__BAD_SUPPORT;
+        return 1;
+    }
+    double f = sv->md->scale / scale;
+    *g *= f * f;
+    return 0;
+}
+
+/* Inline, the common case (a positive lower bound, separated shapes) is one
+ * test. `known`: S_D(x) when the caller has it (certify_overlap). */
+static inline int overlap_after_all(solver *sv, agjk__solve_output *out, double *g,
+                                    const agjk_vec3 *known) {
+    if (!(2.0 * sv->x2 <= *g) || sv->count < 2) return 0;
+    return settle_overlap(sv, out, g, known);
 }
 
 /* For each support mask of fewer than four vertices: the kept indices in
@@ -545,6 +612,7 @@ static int plane_stops(solver *sv, agjk__solve_output *out, int k) {
     agjk__outcome v = gap_verdict(sv, gp, 0.0);
     if (v == AGJK__ITERATION_CAP) return 0;
     if (v == AGJK__CONVERGED && sign_pending(sv, gp, k)) return 0;
+    if (overlap_after_all(sv, out, &gp, NULL)) return 1;
     if (!parallel(m->d_best, sv->x)) out->direction = m->d_best;
     out->gap = gp > 0.0 ? gp : 0.0;
     out->gap_valid = 1;
@@ -743,7 +811,7 @@ void agjk__solve(agjk__minkowski *md, const agjk__solve_input *in, agjk__solve_o
     int adaptive = in->method == AGJK_METHOD_ADAPTIVE;
     int stalled = 0;     /* consecutive iterations without progress */
     sv.sign_budget = SIGN_SEEK_ITERATIONS;
-    sv.seek_sign = 0;
+    sv.plain_next = 0;
     for (int k = 0; k < in->max_iterations; ++k) {
         out->iterations = k + 1;
         agjk_vec3 d = k == 0 ? d0 : sv.x;
@@ -752,6 +820,19 @@ void agjk__solve(agjk__minkowski *md, const agjk__solve_input *in, agjk__solve_o
             support(&sv, &d, &s, 1);
             ++out->support_calls;
             if (support_ends_query(&sv, d, &s, out)) break;
+            /* Adaptive method: a first momentum support that found s_0 again
+             * (the simplex's one point, bit for bit) told nothing; once, in
+             * another direction (direction.c, agjk__momentum_retry). Its own
+             * plane is dropped: only the retried one is recorded. */
+            if (k == 1 && sv.m.phase == AGJK__PHASE_POLYAK && sv.m.active && sv.count == 1 &&
+                s.w.x == sv.w[0].x && s.w.y == sv.w[0].y && s.w.z == sv.w[0].z &&
+                sv.m.plane <= 0.0 && !parallel(d, sv.x)) {
+                d = agjk__momentum_retry(&sv.m, sv.x);
+                support_rare(&sv, &d, &s);
+                ++out->support_calls;
+                if (support_ends_query(&sv, d, &s, out)) break;
+                sv.plain_next = 1;
+            }
         }
         if (warm) {
             /* A support plane that cuts off a cached point proves the cache
@@ -789,6 +870,7 @@ void agjk__solve(agjk__minkowski *md, const agjk__solve_input *in, agjk__solve_o
             if (sv.m.active && momentum_stalls(&sv, g, k) && !(adaptive && parallel(d, sv.x))) {
                 /* Alg. 6 lines 5-7: the momentum direction makes no progress. */
                 if (parallel(d, sv.x)) {
+                    if (overlap_after_all(&sv, out, &g, &s.w)) break;
                     out->gap = g;
                     out->gap_valid = 1;
                     agjk__outcome v = gap_verdict(&sv, g, 0.0);
@@ -812,13 +894,15 @@ void agjk__solve(agjk__minkowski *md, const agjk__solve_input *in, agjk__solve_o
                     out->outcome = AGJK__BAD_SUPPORT;
                     break;
                 }
-                out->gap = g; /* a true Frank-Wolfe gap: s = S_D(x) */
                 out->gap_valid = 1;
                 agjk__outcome v = gap_verdict(&sv, g, 0.0);
                 if (v != AGJK__ITERATION_CAP && !(v == AGJK__CONVERGED && sign_pending(&sv, g, k))) {
+                    if (overlap_after_all(&sv, out, &g, &s.w)) break;
                     out->outcome = v;
+                    out->gap = g; /* a true Frank-Wolfe gap: s = S_D(x) */
                     break;
                 }
+                out->gap = g;
             }
         }
         agjk_vec3 x_new;
@@ -848,7 +932,7 @@ void agjk__solve(agjk__minkowski *md, const agjk__solve_input *in, agjk__solve_o
              * if it lies deep inside the points (with a few more if needed). */
             core_overlap = (at_origin && noise == 0.0) ||
                            (enclosed && shallow_faces(sv.w, noise) == 0) ||
-                           certify_overlap(&sv, out);
+                           certify_overlap(&sv, out, NULL);
             if (md->bad_support) {
                 out->outcome = AGJK__BAD_SUPPORT;
                 break;
@@ -910,7 +994,7 @@ void agjk__solve(agjk__minkowski *md, const agjk__solve_input *in, agjk__solve_o
             sv.m.d_prev = d;
             sv.m.s_prev = s.w;
         }
-        if (sv.seek_sign && sv.m.active) {
+        if (sv.plain_next && sv.m.active) {
             sv.m.active = 0;
             out->momentum_stop = k;
         }
@@ -931,7 +1015,8 @@ void agjk__solve(agjk__minkowski *md, const agjk__solve_input *in, agjk__solve_o
             out->gap_valid = 1;
             if (out->outcome != AGJK__AT_ROUNDING) {
                 agjk__outcome v = gap_verdict(&sv, out->gap, v3_norm2(xs));
-                if (v != AGJK__ITERATION_CAP) out->outcome = v;
+                if (v != AGJK__ITERATION_CAP && !overlap_after_all(&sv, out, &out->gap, &s.w))
+                    out->outcome = v;
             }
         }
     }

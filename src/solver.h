@@ -37,6 +37,10 @@ void agjk__momentum_init(agjk__momentum *m, agjk_method method, agjk_vec3 x0, in
 /* Support direction d_k for iterate x_k at iteration k while momentum is active. */
 agjk_vec3 agjk__momentum_direction(const agjk__momentum *m, int k, agjk_vec3 x);
 
+/* Adaptive method, iteration 1 of the Polyak phase: the direction in which
+ * to retry a support that returned s_0 again (direction.c). */
+agjk_vec3 agjk__momentum_retry(const agjk__momentum *m, agjk_vec3 x);
+
 /* Adaptive method: records the support plane of s (a point of D) found in
  * direction d at iterate x (before the stopping tests). */
 void agjk__momentum_plane(agjk__momentum *m, agjk_vec3 d, agjk_vec3 s, agjk_vec3 x);

@@ -12,7 +12,12 @@
  *   D: a 1e9 ... 1e12 long needle passing a thin box by 1e-8 ... 1, where that
  *   rounding (about 1e-7 ... 1e-3) often swamps the gap, gets no false
  *   overlap (checked against the exact distance in quadruple precision),
- *   while deep overlaps of the same pairs are still certified. */
+ *   while deep overlaps of the same pairs are still certified;
+ * - two ellipsoids overlapping by 1.5e-6 of their size, where plain GJK
+ *   creeps on triangles past the origin until the sign-seeking budget runs
+ *   out (coherent-motion benchmark, fast ellipsoids, pair 6, step 63): the
+ *   cold query certifies the overlap, as the warm-started ones do, instead
+ *   of answering contact within tolerance. */
 #include <float.h>
 #include <math.h>
 #include <stdio.h>
@@ -309,11 +314,63 @@ START_TEST(needles_get_no_false_overlap) {
 }
 END_TEST
 
+/* The pose of tools/bench/coherent.c's fast ellipsoid trajectory, pair 6,
+ * step 63 (seed 1), bit for bit. The cold adaptive query used to end
+ * "contact within tolerance" with [0, 3.3e-7] after 19 support calls while
+ * the hinted and cached queries of that step certified the overlap. */
+START_TEST(shallow_overlap_decided_cold) {
+    ref_shape ra, rb;
+    tu_shape_init(&ra, REF_ELLIPSOID, 0x1.499806955c08fp-1, 0x1.f1cf2b8da2472p-2,
+                  0x1.1371ed696047fp-1);
+    tu_shape_init(&rb, REF_ELLIPSOID, 0x1.310adcacecf78p+0, 0x1.e920c1d1d7205p-1,
+                  0x1.e33a7c36dcf01p-1);
+    agjk_pose pa = {{{0x1.e9feb3a8767c6p-1, 0x1.28f665b5516b4p-2, -0x1.835e720e06cb8p-9},
+                     {-0x1.276a0466a18a2p-2, 0x1.e6dad17a554bdp-1, -0x1.cb80019aace0fp-4},
+                     {-0x1.e6fb3eec874d1p-6, 0x1.bb3e5bc7db11dp-4, 0x1.fcc40bbf917c9p-1}},
+                    {0x1.337b96c2c9ffap-4, 0x1.337b96c2c9ffap-4, 0x1.337b96c2c9ffap-4}};
+    agjk_pose pb = {{{0x1.ae142117a6e43p-1, -0x1.046228b2bec63p-3, -0x1.0e12708b96cc7p-1},
+                     {-0x1.82e0310557289p-2, -0x1.ab6d17e4a191cp-1, -0x1.9a0996b1ec82fp-2},
+                     {-0x1.8ec9fa0a94ef2p-2, 0x1.12402a9af7489p-1, -0x1.7fa16d860ee9fp-1}},
+                    {-0x1.c59929c926f0cp-1, 0x1.1a629ed3886e6p-1, -0x1.0ad674b6f40b1p+0}};
+    agjk_shape sa, sb;
+    TU_CHECK_INT_EQ(ref_make_agjk(&ra, &sa), AGJK_STATUS_OK);
+    TU_CHECK_INT_EQ(ref_make_agjk(&rb, &sb), AGJK_STATUS_OK);
+    /* The truth: an overlap, certified in long double. */
+    ref_result ref;
+    TU_CHECK_INT_EQ(ref_distance(&ra, &pa, &rb, &pb, &ref), 0);
+    TU_ENSURE(ref.intersecting, "the reference does not certify the overlap");
+    /* Cold, default method (the benchmark's distance query, and the
+     * default's witness points, and the Boolean query): certified. */
+    for (int q = 0; q < 3; q++) {
+        agjk_options o = agjk_default_options();
+        if (q == 0) o.compute = AGJK_COMPUTE_DISTANCE;
+        agjk_result r;
+        agjk_status st = q == 2 ? agjk_collide(&sa, &pa, &sb, &pb, &o, &r)
+                                : agjk_distance(&sa, &pa, &sb, &pb, &o, &r);
+        TU_ENSURE(st == AGJK_STATUS_INTERSECTING && r.status == st,
+                  "query %d: status %d (distance %g, bound %g) after %d support calls", q, st,
+                  r.distance, r.bound, r.support_calls);
+        /* A few supports beyond the plain loop's 19, not a search. */
+        TU_ENSURE(r.support_calls <= 26, "query %d: %d support calls", q, r.support_calls);
+    }
+    /* Every method but plain Frank-Wolfe (which keeps no simplex to certify
+     * with) decides it too. */
+    for (int m = 0; m < CORE_METHOD_COUNT; m++) {
+        if (core_methods[m] == AGJK_METHOD_FRANK_WOLFE) continue;
+        agjk_options o = agjk_default_options();
+        o.method = core_methods[m];
+        agjk_result r;
+        TU_CHECK_INT_EQ(agjk_distance(&sa, &pa, &sb, &pb, &o, &r), AGJK_STATUS_INTERSECTING);
+    }
+}
+END_TEST
+
 int main(void) {
     Suite *s = suite_create("verdicts");
     TU_ADD(s, point_facing_cube_face);
     TU_ADD(s, polytopes_at_the_floor);
     TU_ADD(s, stop_reasons);
     TU_ADD(s, needles_get_no_false_overlap);
+    TU_ADD(s, shallow_overlap_decided_cold);
     return tu_run_suite(s);
 }
