@@ -39,10 +39,12 @@ $(OUT)/tools/bench/hull_support.o: tools/bench/hull_support.c $(BENCH_HDRS) $(HE
 	$(CC) $(ALL_CPPFLAGS) $(BENCH_MESH_CPPFLAGS) $(ALL_CFLAGS) -c $< -o $@
 
 $(BENCH_BIN): $(OUT)/tools/bench/main.o $(OUT)/tools/bench/hull_support.o \
-              $(OUT)/tools/bench/depth_bench.o $(BENCH_ADAPTIVE_OBJS) $(BENCH_LIB) \
+              $(OUT)/tools/bench/depth_bench.o $(OUT)/tools/bench/stress.o \
+              $(BENCH_ADAPTIVE_OBJS) $(BENCH_LIB) \
               $(BENCH_MESH_LIB) $(OUT)/tests/common/libtestcommon.a $(LIB_A)
 	$(or $(BENCH_LD),$(CC)) $(ALL_CFLAGS) -o $@ $(OUT)/tools/bench/main.o \
-	    $(OUT)/tools/bench/hull_support.o $(OUT)/tools/bench/depth_bench.o $(BENCH_ADAPTIVE_OBJS) \
+	    $(OUT)/tools/bench/hull_support.o $(OUT)/tools/bench/depth_bench.o \
+	    $(OUT)/tools/bench/stress.o $(BENCH_ADAPTIVE_OBJS) \
 	    $(BENCH_EXTRA_OBJS) \
 	    $(BENCH_LIB) $(BENCH_MESH_LIB) $(OUT)/tests/common/libtestcommon.a $(LIB_A) \
 	    $(BENCH_MESH_LIBS) $(BENCH_CCD_LIBS) $(BENCH_EXTRA_LIBS) -lm

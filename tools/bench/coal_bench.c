@@ -10,9 +10,9 @@
 #include "hull_support.h"
 
 /* The methods both libraries have, in bench_method order. */
-static const int coal_methods[4] = {BM_GJK, BM_NESTEROV, BM_NESTEROV_NORMALIZED, BM_POLYAK};
+const int coal_bench_methods[4] = {BM_GJK, BM_NESTEROV, BM_NESTEROV_NORMALIZED, BM_POLYAK};
+const char *const coal_bench_method_short[4] = {"GJK", "Nesterov", "Nest.-norm.", "Polyak"};
 static const int coal_codes[4] = {COAL_GJK, COAL_NESTEROV, COAL_NESTEROV_NORMALIZED, COAL_POLYAK};
-static const char *const short_names[4] = {"GJK", "Nesterov", "Nest.-norm.", "Polyak"};
 
 void *coal_bench_shape(const bench_shape *s) {
     coal_shape_desc d;
@@ -47,31 +47,39 @@ void coal_bench_pose(const agjk_pose *p, double r[9], double t[3]) {
 
 /* A converged distance farther from the reference than the duality gap
  * allows: ||x - x*||^2 <= g <= tolerance bounds the error by sqrt(tolerance). */
-static unsigned char off_tolerance(const bench_record *r, double tolerance) {
+static unsigned char off_tolerance(const bench_record *r, double tolerance, double slack) {
     if (r->mode != BENCH_DISTANCE || !r->judged || !r->converged) return 0;
-    return r->error > sqrt(tolerance) + 1e-12;
+    return r->error > sqrt(tolerance) + slack;
 }
 
-static void progress(int done, int total, double t0) {
+static void progress(const char *label, int done, int total, double t0) {
     static double last;
     double now = bench_now_ns();
     if (done < total && now - last < 1e9) return;
     last = now;
-    fprintf(stderr, "\r  agjk vs Coal: %d/%d (%.0f s)%s", done, total, (now - t0) * 1e-9,
+    fprintf(stderr, "\r  %s: %d/%d (%.0f s)%s", label, done, total, (now - t0) * 1e-9,
             done >= total ? "\n" : "");
     fflush(stderr);
 }
 
 coal_bench_data *coal_bench_run(const bench_config *cfg, const bench_set *set) {
-    coal_bench_data *d;
-    void **shapes;
-    int i, m, mode;
-    double t0 = bench_now_ns();
     if (!coal_adapter_available()) {
         fprintf(stderr, "agjk-bench: no Coal in this build (%s)\n", coal_adapter_version());
         return NULL;
     }
     if (cfg->coal_reps <= 0) return NULL;
+    fprintf(stderr, "agjk-bench: agjk vs Coal %s, same methods and problems (R = %d)\n",
+            coal_adapter_version(), cfg->coal_reps);
+    return coal_bench_run_set(cfg, set, "agjk vs Coal");
+}
+
+coal_bench_data *coal_bench_run_set(const bench_config *cfg, const bench_set *set,
+                                    const char *label) {
+    coal_bench_data *d;
+    void **shapes;
+    int i, m, mode;
+    double t0 = bench_now_ns();
+    if (!coal_adapter_available() || cfg->coal_reps <= 0) return NULL;
     d = calloc(1, sizeof *d);
     shapes = calloc((size_t)set->shape_count + 1, sizeof *shapes);
     if (!d || !shapes) abort();
@@ -79,10 +87,10 @@ coal_bench_data *coal_bench_run(const bench_config *cfg, const bench_set *set) {
     if (!d->recs) abort();
     d->version = coal_adapter_version();
     for (i = 0; i < set->shape_count; ++i) shapes[i] = coal_bench_shape(&set->shapes[i]);
-    fprintf(stderr, "agjk-bench: agjk vs Coal %s, same methods and problems (R = %d)\n",
-            d->version, cfg->coal_reps);
     for (i = 0; i < set->problem_count; ++i) {
         const bench_problem *p = &set->problems[i];
+        /* The same relative accuracy at every scale (1 for the protocol). */
+        double tolerance = cfg->tolerance * p->scale * p->scale;
         if (!shapes[p->a] || !shapes[p->b]) {
             d->skipped_problems++;
             continue;
@@ -95,18 +103,19 @@ coal_bench_data *coal_bench_run(const bench_config *cfg, const bench_set *set) {
                 coal_answer a;
                 memset(r, 0, sizeof *r);
                 memset(&o, 0, sizeof o);
-                o.tolerance = cfg->tolerance;
+                o.tolerance = tolerance;
                 o.relative = 0; /* Coal is run with the absolute duality gap */
                 o.max_iterations = cfg->max_iterations;
                 o.reps = cfg->coal_reps;
-                if (bench_solve(set, p, coal_methods[m], (bench_mode)mode, &o, &r->agjk.run) != 0)
+                if (bench_solve(set, p, coal_bench_methods[m], (bench_mode)mode, &o,
+                                &r->agjk.run) != 0)
                     continue;
                 memset(&q, 0, sizeof q);
                 coal_bench_pose(&p->pose_a, q.rotation_a, q.translation_a);
                 coal_bench_pose(&p->pose_b, q.rotation_b, q.translation_b);
                 q.method = coal_codes[m];
                 q.boolean = mode;
-                q.tolerance = cfg->tolerance;
+                q.tolerance = tolerance;
                 q.max_iterations = cfg->max_iterations;
                 q.reps = cfg->coal_reps;
                 q.now_ns = bench_now_ns;
@@ -116,7 +125,7 @@ coal_bench_data *coal_bench_run(const bench_config *cfg, const bench_set *set) {
                     continue;
                 }
                 r->agjk.problem = r->coal.problem = i;
-                r->agjk.method = r->coal.method = (signed char)coal_methods[m];
+                r->agjk.method = r->coal.method = (signed char)coal_bench_methods[m];
                 r->agjk.mode = r->coal.mode = (signed char)mode;
                 r->coal.run.status = a.verdict == 1   ? AGJK_STATUS_INTERSECTING
                                      : a.verdict == 0 ? AGJK_STATUS_SEPARATED
@@ -129,11 +138,11 @@ coal_bench_data *coal_bench_run(const bench_config *cfg, const bench_set *set) {
                 r->coal_status = a.coal_status;
                 bench_evaluate(p, &r->agjk);
                 bench_evaluate(p, &r->coal);
-                r->agjk_off = off_tolerance(&r->agjk, cfg->tolerance);
-                r->coal_off = off_tolerance(&r->coal, cfg->tolerance);
+                r->agjk_off = off_tolerance(&r->agjk, tolerance, bench_rounding_slack(p));
+                r->coal_off = off_tolerance(&r->coal, tolerance, bench_rounding_slack(p));
                 d->count++;
             }
-        progress(i + 1, set->problem_count, t0);
+        progress(label, i + 1, set->problem_count, t0);
     }
     for (i = 0; i < set->shape_count; ++i) coal_adapter_shape_free(shapes[i]);
     free(shapes);
@@ -151,16 +160,10 @@ void coal_bench_free(coal_bench_data *d) {
     free(d);
 }
 
-/* Aggregates of one set x category x method x mode. */
-typedef struct group {
-    int n, agjk_wrong, coal_wrong, agjk_off, coal_off, agjk_nc, coal_nc, slower;
-    double ratio_median, ratio_of_means, agjk_ns, coal_ns;
-    double agjk_it, coal_it, agjk_calls, coal_calls;
-} group;
-
-static group group_of(const bench_set *set, const coal_bench_data *d, int family, int category,
-                      int method, int mode, double *buf_ratio, double *buf_a, double *buf_c) {
-    group g;
+coal_bench_group coal_bench_group_of(const bench_set *set, const coal_bench_data *d, int family,
+                                     int category, int method, int mode, double *buf_ratio,
+                                     double *buf_a, double *buf_c) {
+    coal_bench_group g;
     double sa = 0, sc = 0;
     int i;
     memset(&g, 0, sizeof g);
@@ -184,6 +187,7 @@ static group group_of(const bench_set *set, const coal_bench_data *d, int family
         g.agjk_off += r->agjk_off;
         g.coal_off += r->coal_off;
         g.agjk_nc += !r->agjk.converged;
+        g.agjk_violations += r->agjk.violation;
         g.coal_nc += !r->coal.converged;
         g.slower += r->agjk.run.time_ns > r->coal.run.time_ns;
         g.n++;
@@ -223,16 +227,14 @@ static int ccd_ratios(const bench_report *r, int family, int category, double ou
     return n;
 }
 
-/* A ratio cell: bold when agjk is slower; a dagger when the two libraries
- * did different work (mean support calls more than 5% apart). */
-static void cell(FILE *f, double v, int differ) {
+void coal_bench_cell(FILE *f, double v, int differ) {
     const char *mark = differ ? "\xe2\x80\xa0" : "";
     if (isnan(v)) fprintf(f, " - |");
     else if (v > 1.0) fprintf(f, " **%.2f**%s |", v, mark);
     else fprintf(f, " %.2f%s |", v, mark);
 }
 
-static int different_work(const group *g) {
+int coal_bench_different_work(const coal_bench_group *g) {
     return g->n > 0 && fabs(g->agjk_calls - g->coal_calls) > 0.05 * g->coal_calls;
 }
 
@@ -247,19 +249,21 @@ static void ratio_table(FILE **out, int nout, const bench_report *r, const coal_
         fprintf(out[k], "| set | category |");
         for (mode = 0; mode < 2; ++mode)
             for (m = 0; m < 4; ++m)
-                fprintf(out[k], " %s %s |", mode ? "Boolean" : "distance", short_names[m]);
+                fprintf(out[k], " %s %s |", mode ? "Boolean" : "distance",
+                        coal_bench_method_short[m]);
         fprintf(out[k], " Boolean: agjk accel. / libccd MPR | agjk GJK / libccd GJK |\n|---|---|");
         for (m = 0; m < 10; ++m) fprintf(out[k], "---|");
         fprintf(out[k], "\n");
     }
     for (fam = 0; fam < BENCH_FAMILY_COUNT; ++fam)
         for (c = 0; c < BENCH_CATEGORY_COUNT; ++c) {
-            group g[2][4];
+            coal_bench_group g[2][4];
             double ccd[2] = {NAN, NAN};
             int any = 0;
             for (mode = 0; mode < 2; ++mode)
                 for (m = 0; m < 4; ++m) {
-                    g[mode][m] = group_of(r->set, d, fam, c, coal_methods[m], mode, b0, b1, b2);
+                    g[mode][m] = coal_bench_group_of(r->set, d, fam, c, coal_bench_methods[m],
+                                                     mode, b0, b1, b2);
                     any += g[mode][m].n;
                 }
             if (!any) continue;
@@ -268,17 +272,17 @@ static void ratio_table(FILE **out, int nout, const bench_report *r, const coal_
                 fprintf(out[k], "| %s | %s |", bench_family_name(fam), bench_category_name(c));
                 for (mode = 0; mode < 2; ++mode)
                     for (m = 0; m < 4; ++m)
-                        cell(out[k], g[mode][m].n ? g[mode][m].ratio_median : NAN,
-                             different_work(&g[mode][m]));
-                cell(out[k], ccd[0], 0);
-                cell(out[k], ccd[1], 0);
+                        coal_bench_cell(out[k], g[mode][m].n ? g[mode][m].ratio_median : NAN,
+                                        coal_bench_different_work(&g[mode][m]));
+                coal_bench_cell(out[k], ccd[0], 0);
+                coal_bench_cell(out[k], ccd[1], 0);
                 fprintf(out[k], "\n");
             }
             for (mode = 0; mode < 2; ++mode)
                 for (m = 0; m < 4; ++m) {
                     double v = g[mode][m].ratio_median;
                     if (!g[mode][m].n) continue;
-                    if (different_work(&g[mode][m])) { /* not the same computation */
+                    if (coal_bench_different_work(&g[mode][m])) { /* not the same computation */
                         ++differ;
                         continue;
                     }
@@ -293,7 +297,7 @@ static void ratio_table(FILE **out, int nout, const bench_report *r, const coal_
                                                        bench_family_name(fam),
                                                        bench_category_name(c),
                                                        mode ? "Boolean" : "distance",
-                                                       short_names[m], v);
+                                                       coal_bench_method_short[m], v);
                     }
                 }
         }
@@ -402,12 +406,14 @@ int coal_bench_write(const bench_report *r, const coal_bench_data *d) {
         for (c = 0; c < BENCH_CATEGORY_COUNT; ++c)
             for (mode = 0; mode < 2; ++mode)
                 for (m = 0; m < 4; ++m) {
-                    group g = group_of(r->set, d, fam, c, coal_methods[m], mode, b0, b1, b2);
+                    coal_bench_group g = coal_bench_group_of(r->set, d, fam, c,
+                                                             coal_bench_methods[m], mode, b0, b1,
+                                                             b2);
                     if (!g.n) continue;
                     fprintf(md, "| %s | %s | %s | %s | %d | %.0f | %.0f | %.2f | %.2f | %d | "
                                 "%.1f / %.1f | %.1f / %.1f | %d / %d | %d / %d | %d / %d |\n",
                             bench_family_name(fam), bench_category_name(c),
-                            mode ? "Boolean" : "distance", bench_method_name(coal_methods[m]),
+                            mode ? "Boolean" : "distance", bench_method_name(coal_bench_methods[m]),
                             g.n, g.agjk_ns, g.coal_ns, g.ratio_median, g.ratio_of_means,
                             g.slower, g.agjk_it, g.coal_it, g.agjk_calls, g.coal_calls,
                             g.agjk_wrong, g.coal_wrong, g.agjk_off, g.coal_off, g.agjk_nc,
@@ -416,7 +422,8 @@ int coal_bench_write(const bench_report *r, const coal_bench_data *d) {
                         fprintf(csv, "%s,%s,%s,%s,%d,%.1f,%.1f,%.4f,%.4f,%d,%.3f,%.3f,%.3f,%.3f,"
                                      "%d,%d,%d,%d,%d,%d\n",
                                 bench_family_name(fam), bench_category_name(c),
-                                mode ? "boolean" : "distance", bench_method_name(coal_methods[m]),
+                                mode ? "boolean" : "distance",
+                                bench_method_name(coal_bench_methods[m]),
                                 g.n, g.agjk_ns, g.coal_ns, g.ratio_median, g.ratio_of_means,
                                 g.slower, g.agjk_it, g.coal_it, g.agjk_calls, g.coal_calls,
                                 g.agjk_wrong, g.coal_wrong, g.agjk_off, g.coal_off, g.agjk_nc,

@@ -35,9 +35,36 @@ void *coal_bench_shape(const bench_shape *s);
 void coal_bench_pose(const agjk_pose *p, double r[9], double t[3]);
 
 /* Runs the comparison when Coal was built in and cfg->coal_reps > 0; returns
- * NULL (after saying why on stderr) otherwise. */
+ * NULL (after saying why on stderr) otherwise. The tolerance of a problem is
+ * cfg->tolerance x its scale^2. */
 coal_bench_data *coal_bench_run(const bench_config *cfg, const bench_set *set);
+/* The same on any set, quietly but for a progress line headed by label
+ * (NULL without Coal or with cfg->coal_reps <= 0). */
+coal_bench_data *coal_bench_run_set(const bench_config *cfg, const bench_set *set,
+                                    const char *label);
 void coal_bench_free(coal_bench_data *d);
+
+/* The methods both libraries have (bench_method values) and their short names. */
+extern const int coal_bench_methods[4];
+extern const char *const coal_bench_method_short[4];
+
+/* Aggregates of one family x category x method x mode of a run. */
+typedef struct coal_bench_group {
+    int n, agjk_wrong, coal_wrong, agjk_off, coal_off, agjk_nc, coal_nc, slower;
+    int agjk_violations;       /* agjk's certified interval misses the reference */
+    double ratio_median, ratio_of_means, agjk_ns, coal_ns;
+    double agjk_it, coal_it, agjk_calls, coal_calls;
+} coal_bench_group;
+
+/* buf_*: scratch of d->count doubles each. */
+coal_bench_group coal_bench_group_of(const bench_set *set, const coal_bench_data *d, int family,
+                                     int category, int method, int mode, double *buf_ratio,
+                                     double *buf_a, double *buf_c);
+/* 1 when the two libraries did different work (mean support calls more than
+ * 5% apart): the ratio then compares different computations. */
+int coal_bench_different_work(const coal_bench_group *g);
+/* A ratio table cell: bold when agjk is slower, a dagger when differ. */
+void coal_bench_cell(FILE *f, double v, int differ);
 
 /* Appends the agjk/Coal section to <out>/tables.md (or, without Coal, how to
  * get it), writes <out>/coal.csv and coal-ratios.md, and prints the ratio

@@ -3,6 +3,10 @@
 
 #include <math.h>
 
+double bench_rounding_slack(const bench_problem *p) {
+    return 1e-12 * fmax(1.0, fmax(p->scale, p->offset));
+}
+
 void bench_evaluate(const bench_problem *p, bench_record *rec) {
     const bench_run *r = &rec->run;
     double d_ref, lower, upper, slack;
@@ -15,8 +19,9 @@ void bench_evaluate(const bench_problem *p, bench_record *rec) {
     d_ref = p->ref.intersecting ? 0.0 : (double)p->ref.distance;
     lower = p->ref.intersecting ? 0.0 : (double)p->ref.lower;
     upper = p->ref.intersecting ? 0.0 : (double)p->ref.upper;
-    /* Rounding of the double-precision query itself: coordinates are O(10). */
-    slack = 1e-12;
+    /* Rounding of the double-precision query itself: coordinates are O(10)
+     * times the scale, or as far as the problem was moved from the origin. */
+    slack = bench_rounding_slack(p);
     if (r->status == AGJK_STATUS_SEPARATED && (p->ref.intersecting || upper <= 0.0))
         rec->wrong = 1;
     if (r->status == AGJK_STATUS_INTERSECTING && lower > slack) rec->wrong = 1;

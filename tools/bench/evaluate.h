@@ -16,6 +16,11 @@ typedef struct bench_record {
     double error;             /* |distance - d_ref| in distance mode, else 0 */
 } bench_record;
 
+/* What the checks below forgive for the rounding of the double-precision
+ * query itself: 1e-12 for the protocol's coordinates (O(10)), more for
+ * problems of larger scale or moved far from the origin (length units). */
+double bench_rounding_slack(const bench_problem *p);
+
 /* Fills rec's judgement fields from problem p's reference and rec->run. */
 void bench_evaluate(const bench_problem *p, bench_record *rec);
 

@@ -16,6 +16,7 @@
 #include "hull_support.h"
 #include "mesh_io.h"
 #include "nesmino.h"
+#include "stress.h"
 
 const double wp_tolerances[WP_TOL_COUNT] = {1e-2, 1e-3, 1e-4, 1e-5, 1e-6, 1e-7,
                                             1e-8, 1e-9, 1e-10, 1e-11, 1e-12};
@@ -37,6 +38,10 @@ static void usage(FILE *f) {
         "  --ccd-reps R      repetitions in the libccd timing (default 50; 0 disables it)\n"
         "  --coal-reps R     repetitions in the agjk/Coal timing (default 100; 0 disables it;\n"
         "                    needs a build with Coal: tools/fetch-coal.sh)\n"
+        "  --stress-pairs K  pairs per family of the agjk/Coal stress set: stiff, flat, tiny,\n"
+        "                    huge, far and nearly touching shapes (default 20; 0 disables it;\n"
+        "                    runs with the Coal comparison, R = --coal-reps)\n"
+        "  --stress-poses M  poses per pair of the stress set (default 5)\n"
         "  --depth-reps R    repetitions in the penetration-depth comparison with libccd\n"
         "                    (default 20; 0 disables it)\n"
         "  --coherent-pairs K  pairs per family moved along smooth trajectories, queried\n"
@@ -73,6 +78,8 @@ static int parse(int argc, char **argv, bench_config *c) {
     c->wp_reps = 10;
     c->ccd_reps = 50;
     c->coal_reps = 100;
+    c->stress_pairs = 20;
+    c->stress_poses = 5;
     c->depth_reps = 20;
     c->coherent_pairs = 20;
     c->coherent_steps = 200;
@@ -96,6 +103,8 @@ static int parse(int argc, char **argv, bench_config *c) {
         INT_OPT("--wp-reps", wp_reps)
         INT_OPT("--ccd-reps", ccd_reps)
         INT_OPT("--coal-reps", coal_reps)
+        INT_OPT("--stress-pairs", stress_pairs)
+        INT_OPT("--stress-poses", stress_poses)
         INT_OPT("--depth-reps", depth_reps)
         INT_OPT("--max-meshes", max_meshes)
         INT_OPT("--coherent-pairs", coherent_pairs)
@@ -123,6 +132,8 @@ static int parse(int argc, char **argv, bench_config *c) {
             c->wp_reps = 3;
             c->ccd_reps = 5;
             c->coal_reps = 10;
+            c->stress_pairs = 2;
+            c->stress_poses = 2;
             c->depth_reps = 3;
             c->max_meshes = 100;
             c->coherent_pairs = 4;
@@ -136,7 +147,8 @@ static int parse(int argc, char **argv, bench_config *c) {
         return -1;
     }
     if (c->pairs < 1 || c->poses < 1 || c->reps < 1 || c->slow_reps < 1 ||
-        c->max_iterations < 1 || c->slow_max_iterations < 1 || c->max_meshes < 1) {
+        c->max_iterations < 1 || c->slow_max_iterations < 1 || c->max_meshes < 1 ||
+        c->stress_poses < 1) {
         fprintf(stderr, "agjk-bench: sizes must be >= 1\n");
         return -1;
     }
@@ -286,6 +298,7 @@ int main(int argc, char **argv) {
     ccd_bench_record *ccd_recs = NULL;
     unsigned char *ccd_outcome = NULL;
     coal_bench_data *coal;
+    bench_stress *stress;
     int h, cap_problems, cap_shapes, depth_missed = 0, coherent_bad = 0;
     double t0, t_all = bench_now_ns();
     static char command[1024];
@@ -397,6 +410,7 @@ int main(int argc, char **argv) {
     }
 
     coal = coal_bench_run(&cfg, &set);
+    stress = bench_stress_run(&cfg);
     if (cfg.depth_reps > 0 && bench_ccd_check() == 0) {
         depth_bench_options dopt = {cfg.depth_reps, cfg.max_iterations, cfg.tolerance, 10.0,
                                     cfg.out_dir};
@@ -420,6 +434,8 @@ int main(int argc, char **argv) {
     rep.seconds[4] = (bench_now_ns() - t_all) * 1e-9;
     if (bench_write_reports(&rep) != 0) return 2;
     if (coal_bench_write(&rep, coal) != 0) return 2;
+    if (bench_stress_write(&cfg, stress) != 0) return 2;
+    bench_stress_free(stress);
     {
         /* The adaptive method against the paper's four and Coal (calls.c). */
         char path[1024];

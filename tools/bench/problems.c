@@ -119,6 +119,8 @@ static int make_shape(bench_set *set, int family, int hull_n, const bench_mesh_s
     int i;
     if (!s) return -1;
     s->size = random_size(rng);
+    if (set->size_hook && (family == BENCH_ELLIPSOIDS || family == BENCH_BOXES))
+        set->size_hook(&s->size, rng);
     s->size.x *= set->scale;
     s->size.y *= set->scale;
     s->size.z *= set->scale;
@@ -167,7 +169,7 @@ static void identity_pose(agjk_pose *p) {
  * tolerance near the floating-point floor. It only places the shapes; the
  * truth every result is judged against is the reference solver's. */
 static int separation(const bench_shape *a, const agjk_pose *pa, const bench_shape *b,
-                      const agjk_pose *pb, double *distance, agjk_vec3 *normal) {
+                      const agjk_pose *pb, double length, double *distance, agjk_vec3 *normal) {
     agjk_options o = agjk_default_options();
     agjk_result r;
     double scale = a->radius + b->radius;
@@ -177,16 +179,32 @@ static int separation(const bench_shape *a, const agjk_pose *pa, const bench_sha
     agjk_distance(&a->shape, pa, &b->shape, pb, &o, &r);
     if (r.status == AGJK_STATUS_INTERSECTING || r.status == AGJK_STATUS_INVALID_INPUT) return 0;
     if (r.status == AGJK_STATUS_CONTACT_WITHIN_TOLERANCE || r.distance <= 0.0) return 0;
-    if (r.bound > 1e-6 * r.distance + 1e-9) return 0; /* not precise enough to place */
+    if (r.bound > 1e-6 * r.distance + 1e-9 * length) return 0; /* not precise enough to place */
     *distance = r.distance;
     *normal = r.normal;
     return 1;
 }
 
+void bench_problem_reference(bench_set *set, bench_problem *p) {
+    int rc = ref_distance(&set->shapes[p->a].ref, &p->pose_a, &set->shapes[p->b].ref, &p->pose_b,
+                          &p->ref);
+    /* A non-converged reference whose certified bounds are still within 1e-9
+     * of each other (it stalls at the long-double floor on some touching
+     * boxes) judges results just as well. */
+    long double lo = p->ref.lower, hi = p->ref.upper;
+    p->ref_ok = rc == 0 || (!p->ref.intersecting && lo >= 0 && hi >= lo &&
+                            hi - lo <= 1e-9L * (hi > 1 ? hi : 1));
+    if (rc != 0 && p->ref_ok) set->ref_stalled++;
+    if (p->ref_ok && p->target > 0) {
+        double dev = fabs((double)p->ref.distance - p->target) / p->scale;
+        if (dev > set->max_target_deviation) set->max_target_deviation = dev;
+    }
+}
+
 int bench_generate(bench_set *set, int family, int pairs, int poses, int hull_n,
                    const bench_mesh_source *meshes, bench_rng *rng, int with_reference,
                    int verbose) {
-    int pair, pose, t;
+    int pair, pose, t, target_count = set->targets ? set->target_count : BENCH_TARGET_COUNT;
     for (pair = 0; pair < pairs; ++pair) {
         int ia = make_shape(set, family, hull_n, meshes, rng);
         int ib = make_shape(set, family, hull_n, meshes, rng);
@@ -203,16 +221,17 @@ int bench_generate(bench_set *set, int family, int pairs, int poses, int hull_n,
                 pb.translation.x = 3.0 * set->scale * u.x;
                 pb.translation.y = 3.0 * set->scale * u.y;
                 pb.translation.z = 3.0 * set->scale * u.z;
-                placed = separation(&set->shapes[ia], &pa, &set->shapes[ib], &pb, &d0, &n);
+                placed = separation(&set->shapes[ia], &pa, &set->shapes[ib], &pb, set->scale,
+                                    &d0, &n);
                 if (!placed) set->rejected_poses++;
             }
             if (!placed) {
                 set->skipped_pairs++;
                 break;
             }
-            for (t = 0; t < BENCH_TARGET_COUNT; ++t) {
+            for (t = 0; t < target_count; ++t) {
                 bench_problem *p;
-                double target = bench_targets[t] * set->scale;
+                double target = (set->targets ? set->targets[t] : bench_targets[t]) * set->scale;
                 double shift = target - d0;
                 if (set->problem_count >= set->problem_capacity) return -1;
                 p = &set->problems[set->problem_count++];
@@ -221,7 +240,7 @@ int bench_generate(bench_set *set, int family, int pairs, int poses, int hull_n,
                 p->pair = pair;
                 p->pose = pose;
                 p->target_index = t;
-                p->category = bench_target_category(t);
+                p->category = set->targets ? set->target_categories[t] : bench_target_category(t);
                 p->a = ia;
                 p->b = ib;
                 p->target = target;
@@ -238,21 +257,7 @@ int bench_generate(bench_set *set, int family, int pairs, int poses, int hull_n,
                     p->xstar.y = -p->target * n.y;
                     p->xstar.z = -p->target * n.z;
                 }
-                if (with_reference) {
-                    int rc = ref_distance(&set->shapes[ia].ref, &p->pose_a,
-                                          &set->shapes[ib].ref, &p->pose_b, &p->ref);
-                    /* A non-converged reference whose certified bounds are still
-                     * within 1e-9 of each other (it stalls at the long-double
-                     * floor on some touching boxes) judges results just as well. */
-                    long double lo = p->ref.lower, hi = p->ref.upper;
-                    p->ref_ok = rc == 0 || (!p->ref.intersecting && lo >= 0 && hi >= lo &&
-                                            hi - lo <= 1e-9L * (hi > 1 ? hi : 1));
-                    if (rc != 0 && p->ref_ok) set->ref_stalled++;
-                    if (p->ref_ok && p->target > 0) {
-                        double dev = fabs((double)p->ref.distance - p->target) / set->scale;
-                        if (dev > set->max_target_deviation) set->max_target_deviation = dev;
-                    }
-                }
+                if (with_reference) bench_problem_reference(set, p);
             }
         }
         if (verbose && (pair + 1) % 10 == 0)

@@ -53,12 +53,17 @@ struct bench_set;
  * it allocated in s->aux. The reference keeps the original vertices. */
 typedef void (*bench_polytope_hook)(bench_shape *s);
 typedef void (*bench_aux_free)(void *aux);
+/* Optional hook run on every new ellipsoid or box size (before the set's
+ * scale multiplies it): may reshape it, e.g. flatten an axis. */
+typedef void (*bench_size_hook)(agjk_vec3 *size, bench_rng *rng);
 
 typedef struct bench_problem {
     int family, pair, pose, target_index, category;
     int a, b;                 /* indices of the shapes */
     double target;            /* signed distance set by the protocol (times scale) */
     double scale;             /* the set's scale when generated */
+    double offset;            /* distance of both shapes from the world origin when they
+                                 were moved there after generation (0: not moved) */
     agjk_pose pose_a, pose_b;
     agjk_vec3 xstar;          /* x* = p_A - p_B, -target * n when target > 0, else 0 */
     ref_result ref;           /* high-precision certified reference */
@@ -79,6 +84,11 @@ typedef struct bench_set {
     bench_aux_free aux_free;
     double scale;             /* length scale of the next generated problems (default 1):
                                  sizes, translations and signed distances are multiplied */
+    bench_size_hook size_hook; /* NULL: the protocol's sizes */
+    const double *targets;    /* NULL: bench_targets; else target_count signed distances
+                                 (times scale), of categories target_categories */
+    const int *target_categories;
+    int target_count;
 } bench_set;
 
 typedef struct bench_mesh_source {
@@ -90,13 +100,17 @@ typedef struct bench_mesh_source {
 void bench_set_init(bench_set *set, int shape_capacity, int problem_capacity);
 void bench_set_free(bench_set *set);
 
-/* Appends `pairs` pairs x `poses` poses x BENCH_TARGET_COUNT problems of
+/* Appends `pairs` pairs x `poses` poses x BENCH_TARGET_COUNT (or the set's
+ * target_count) problems of
  * `family`. hull_n: vertex count for BENCH_HULLS; meshes: for BENCH_MESHES.
  * with_reference: also run the reference solver on every problem.
  * Returns 0, or -1 when the set is full. */
 int bench_generate(bench_set *set, int family, int pairs, int poses, int hull_n,
                    const bench_mesh_source *meshes, bench_rng *rng, int with_reference,
                    int verbose);
+
+/* Runs the reference solver on p (after its poses changed) and sets p->ref_ok. */
+void bench_problem_reference(bench_set *set, bench_problem *p);
 
 /* Fills the agjk and reference views of a shape whose kind/size/vertices are set. */
 void bench_shape_finish(bench_shape *s);
