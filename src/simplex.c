@@ -385,17 +385,16 @@ static unsigned edge_output(const agjk_vec3 *w, int n, int ib, double ra, double
 
 /* Candidate in the face (a, w[ib], w[ic]), a = w[n-1], whose Gram weights
  * lb, lc, la (times det > 0) are positive: the foot n <n, q> / |n|^2 from
- * the normal n = u x v, u = w[ib] - a, v = w[ic] - a, and the vertex
- * q = w[iq] of the face nearest the origin (the error of <n, q> grows with
- * |q|; accurate even when the foot is much nearer the origin than a), if it
- * passes the KKT test for w[o] (o < 0: none). Returns the support mask, or
- * 0. */
-static inline unsigned face_output(const agjk_vec3 *w, int n, int ib, int ic, int iq, double det,
-                                   double lb, double lc, double la, int o, double lambda[4],
-                                   agjk_vec3 *point) {
+ * the normal n = u x v, u = w[ib] - a, v = w[ic] - a (the caller's edge
+ * vectors, already computed), and the vertex q = w[iq] of the face nearest
+ * the origin (the error of <n, q> grows with |q|; accurate even when the
+ * foot is much nearer the origin than a), if it passes the KKT test for
+ * w[o] (o < 0: none). Returns the support mask, or 0. */
+static inline unsigned face_output(const agjk_vec3 *w, int n, int ib, int ic, agjk_vec3 u,
+                                   agjk_vec3 v, int iq, double det, double lb, double lc,
+                                   double la, int o, double lambda[4], agjk_vec3 *point) {
     int ia = n - 1;
-    agjk_vec3 a = w[ia];
-    agjk_vec3 nrm = v3_cross(v3_sub(w[ib], a), v3_sub(w[ic], a));
+    agjk_vec3 nrm = v3_cross(u, v);
     agjk_vec3 f = v3_scale(nrm, v3_dot(nrm, w[iq]) / v3_norm2(nrm));
     double inv = 1.0 / det;
     double wa = la * inv, wb = lb * inv, wc = lc * inv;
@@ -438,7 +437,7 @@ static unsigned gjk_triangle(const agjk_vec3 *w, int exhaustive, double lambda[4
         double db = 2.0 * ru + uu, dc = 2.0 * rv + vv;
         int iq = db < dc ? (db < 0.0 ? 0 : 2) : (dc < 0.0 ? 1 : 2);
         unsigned mask = det > WELL_CONDITIONED * uu * vv
-                            ? face_output(w, 3, 0, 1, iq, det, lb, lc, la, -1, lambda, point)
+                            ? face_output(w, 3, 0, 1, u, v, iq, det, lb, lc, la, -1, lambda, point)
                             : 0u;
         return mask ? mask : decline(w, 3, exhaustive, lambda, point);
     }
@@ -457,21 +456,25 @@ static unsigned gjk_triangle(const agjk_vec3 *w, int exhaustive, double lambda[4
  * Its candidate when the foot lies inside it and the Gram form of the KKT
  * test for w_k (<p, e_k> det = r_k det + l_i g_ik + l_j g_jk >= 0) passes.
  * *taken is set to 1 + k when the face holds the answer but is too thin for
- * the Gram form. */
-static unsigned tetra_face(const agjk_vec3 *w, int i, int j, int k, double gii, double gjj,
-                           double gij, double gik, double gjk, double ri, double rj, double rk,
-                           int *taken, double lambda[4], agjk_vec3 *point) {
+ * the Gram form. The Gram matrix comes as its diagonal gd[i] = g_ii and
+ * its off-diagonal go[i + j - 1] = g_ij (i != j). Inline, with the indices
+ * variable: one copy serves all three faces (gjk_tetrahedron's loop),
+ * without a call's spills. */
+static inline unsigned tetra_face(const agjk_vec3 *w, const agjk_vec3 *e, const double *gd,
+                                  const double *go, const double *r, int i, int j, int k,
+                                  int *taken, double lambda[4], agjk_vec3 *point) {
+    double gii = gd[i], gjj = gd[j], gij = go[i + j - 1], ri = r[i], rj = r[j];
     double det = gii * gjj - gij * gij;
     double li = rj * gij - ri * gjj, lj = ri * gij - rj * gii;
     double la = det - li - lj;
     if (!(li > 0.0 && lj > 0.0 && la > 0.0)) return 0u;
-    if (!(rk * det + li * gik + lj * gjk >= 0.0)) return 0u;
+    if (!(r[k] * det + li * go[i + k - 1] + lj * go[j + k - 1] >= 0.0)) return 0u;
     *taken = 1 + k;
     if (!(det > WELL_CONDITIONED * gii * gjj)) return 0u;
     /* |w_i|^2 - |a|^2 = 2 r_i + g_ii: the vertex nearest the origin */
     double di = 2.0 * ri + gii, dj = 2.0 * rj + gjj;
     int iq = di < dj ? (di < 0.0 ? i : 3) : (dj < 0.0 ? j : 3);
-    return face_output(w, 4, i, j, iq, det, li, lj, la, k, lambda, point);
+    return face_output(w, 4, i, j, e[i], e[j], iq, det, li, lj, la, k, lambda, point);
 }
 
 /* The edge a-w_i of the tetrahedron: its candidate when the Gram form of the
@@ -539,33 +542,43 @@ static unsigned thin_face(const agjk_vec3 *w, int taken, double lambda[4], agjk_
 static unsigned gjk_tetrahedron(const agjk_vec3 *w, int exhaustive, double lambda[4],
                                 agjk_vec3 *point) {
     agjk_vec3 a = w[3];
-    agjk_vec3 e0 = v3_sub(w[0], a), e1 = v3_sub(w[1], a), e2 = v3_sub(w[2], a);
-    double r0 = v3_dot(a, e0), r1 = v3_dot(a, e1), r2 = v3_dot(a, e2);
-    if (r0 >= 0.0 && r1 >= 0.0 && r2 >= 0.0) return vertex_output(w, 4, lambda, point);
-    double g00 = v3_norm2(e0), g11 = v3_norm2(e1), g22 = v3_norm2(e2);
-    double g01 = v3_dot(e0, e1), g12 = v3_dot(e1, e2), g20 = v3_dot(e2, e0);
+    agjk_vec3 e[3];
+    e[0] = v3_sub(w[0], a);
+    e[1] = v3_sub(w[1], a);
+    e[2] = v3_sub(w[2], a);
+    double r[3];
+    r[0] = v3_dot(a, e[0]);
+    r[1] = v3_dot(a, e[1]);
+    r[2] = v3_dot(a, e[2]);
+    if (r[0] >= 0.0 && r[1] >= 0.0 && r[2] >= 0.0) return vertex_output(w, 4, lambda, point);
+    /* The Gram matrix: diagonal gd[i] = g_ii, off-diagonal go[i + j - 1] =
+     * g_ij (g01, g02, g12). */
+    double gd[3], go[3];
+    gd[0] = v3_norm2(e[0]);
+    gd[1] = v3_norm2(e[1]);
+    gd[2] = v3_norm2(e[2]);
+    go[0] = v3_dot(e[0], e[1]);
+    go[2] = v3_dot(e[1], e[2]);
+    go[1] = v3_dot(e[2], e[0]);
     /* The faces through a, then its edges: the first that holds the answer;
      * then the inside; else (beyond the previous face, borderline cases):
      * the exhaustive projection. The face tried first leaves out the vertex
      * with the largest <a, e_k>, the one farthest back along a (right ~90%
-     * of the time in GJK runs on ellipsoids and boxes). */
-    int back = r0 >= r1 ? (r0 >= r2 ? 0 : 2) : (r1 >= r2 ? 1 : 2);
+     * of the time in GJK runs on ellipsoids and boxes); then the others in
+     * index order. The face leaving out w_k is (a, w_{k+1}, w_{k+2}), indices
+     * mod 3. */
+    int back = r[0] >= r[1] ? (r[0] >= r[2] ? 0 : 2) : (r[1] >= r[2] ? 1 : 2);
     int taken = 0;
-    unsigned mask;
-#define FACE_WITHOUT_0 tetra_face(w, 1, 2, 0, g11, g22, g12, g01, g20, r1, r2, r0, &taken, lambda, point)
-#define FACE_WITHOUT_1 tetra_face(w, 2, 0, 1, g22, g00, g20, g12, g01, r2, r0, r1, &taken, lambda, point)
-#define FACE_WITHOUT_2 tetra_face(w, 0, 1, 2, g00, g11, g01, g20, g12, r0, r1, r2, &taken, lambda, point)
-    mask = back == 0 ? FACE_WITHOUT_0 : back == 1 ? FACE_WITHOUT_1 : FACE_WITHOUT_2;
-    if (!mask && !taken && back != 0) mask = FACE_WITHOUT_0;
-    if (!mask && !taken && back != 1) mask = FACE_WITHOUT_1;
-    if (!mask && !taken && back != 2) mask = FACE_WITHOUT_2;
-#undef FACE_WITHOUT_0
-#undef FACE_WITHOUT_1
-#undef FACE_WITHOUT_2
+    unsigned mask = 0u;
+    for (int t = 0; t < 3 && !mask && !taken; ++t) {
+        int k = t == 0 ? back : (t - 1 < back ? t - 1 : t);
+        int i = k == 2 ? 0 : k + 1, j = k == 0 ? 2 : k - 1;
+        mask = tetra_face(w, e, gd, go, r, i, j, k, &taken, lambda, point);
+    }
     if (!mask && !taken) {
-        mask = tetra_edge(w, 0, 1, 2, g00, g01, g20, r0, r1, r2, lambda, point);
-        if (!mask) mask = tetra_edge(w, 1, 2, 0, g11, g12, g01, r1, r2, r0, lambda, point);
-        if (!mask) mask = tetra_edge(w, 2, 0, 1, g22, g20, g12, r2, r0, r1, lambda, point);
+        mask = tetra_edge(w, 0, 1, 2, gd[0], go[0], go[1], r[0], r[1], r[2], lambda, point);
+        if (!mask) mask = tetra_edge(w, 1, 2, 0, gd[1], go[2], go[0], r[1], r[2], r[0], lambda, point);
+        if (!mask) mask = tetra_edge(w, 2, 0, 1, gd[2], go[1], go[2], r[2], r[0], r[1], lambda, point);
         /* GJK's last step on overlapping shapes: the origin enclosed. */
         if (!mask) mask = tetra_inside(w, lambda, point);
     }
