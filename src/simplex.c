@@ -597,12 +597,11 @@ unsigned agjk__simplex_project_gjk_fast(const agjk_vec3 *w, int n, double lambda
 }
 
 unsigned agjk__simplex_project_gjk(const agjk_vec3 *w, int n, double lambda[4], agjk_vec3 *point) {
-    switch (n) {
-    case 1: return vertex_output(w, 1, lambda, point);
-    case 2: return gjk_segment(w, 1, lambda, point);
-    case 3: return gjk_triangle(w, 1, lambda, point);
-    default: return gjk_tetrahedron(w, 1, lambda, point);
-    }
+    /* Largest first: a tetrahedron is the usual case on curved shapes. */
+    if (n >= 4) return gjk_tetrahedron(w, 1, lambda, point);
+    if (n == 3) return gjk_triangle(w, 1, lambda, point);
+    if (n == 2) return gjk_segment(w, 1, lambda, point);
+    return vertex_output(w, 1, lambda, point);
 }
 
 agjk_status agjk_simplex_project_origin(const agjk_vec3 *vertices, int count,
