@@ -350,16 +350,24 @@ static unsigned vertex_output(const agjk_vec3 *w, int n, double lambda[4], agjk_
 
 /* The foot of the origin on the segment a-b, a = w[ia] the newest point,
  * b = w[ib] an older one, u = b - a, uu = |u|^2, when it lies strictly
- * inside: its weights on a and b and the point. Measured from b with the
- * weight of a computed directly, exactly as the exhaustive projection does
- * (bit for bit: the solver's path does not depend on which one projects),
- * with the same cleanup along the segment (segment_cleanup). Returns 0
- * otherwise. */
+ * inside: its weights on a and b, the point and its squared norm. Measured
+ * from b with the weight of a computed directly, exactly as the exhaustive
+ * projection does (bit for bit: the solver's path does not depend on which
+ * one projects), with the same cleanup along the segment (segment_cleanup,
+ * written out here so that |p|^2, which its test needs, serves the caller's
+ * KKT test too). Returns 0 otherwise. */
 static inline int segment_foot(const agjk_vec3 *w, int ia, int ib, agjk_vec3 u, double uu,
-                               double *wa, double *wb, agjk_vec3 *p) {
+                               double *wa, double *wb, agjk_vec3 *p, double *pp) {
     agjk_vec3 b = w[ib];
     double s = v3_dot(b, u) / uu; /* p = b + s (a - b) */
-    *p = segment_cleanup(v3_lerp2(b, 1.0 - s, w[ia], s), b, u, uu);
+    agjk_vec3 q = v3_lerp2(b, 1.0 - s, w[ia], s);
+    double qq = v3_norm2(q);
+    if (v3_norm2(b) > 0x1p40 * qq) {
+        q = v3_sub(q, v3_scale(u, v3_dot(q, u) / uu));
+        qq = v3_norm2(q);
+    }
+    *p = q;
+    *pp = qq;
     *wa = s;
     *wb = 1.0 - s;
     return s > 0.0 && s < 1.0; /* also false for uu = 0 */
@@ -372,11 +380,10 @@ static inline int segment_foot(const agjk_vec3 *w, int ia, int ib, agjk_vec3 u, 
 static unsigned edge_output(const agjk_vec3 *w, int n, int ib, double ra, double gbb, int o1,
                             int o2, double lambda[4], agjk_vec3 *point) {
     int ia = n - 1;
-    double wa, wb;
+    double wa, wb, pp;
     agjk_vec3 p;
     if (!(-ra > 0.0 && -ra < gbb)) return 0u; /* the foot is outside the edge */
-    if (!segment_foot(w, ia, ib, v3_sub(w[ib], w[ia]), gbb, &wa, &wb, &p)) return 0u;
-    double pp = v3_norm2(p);
+    if (!segment_foot(w, ia, ib, v3_sub(w[ib], w[ia]), gbb, &wa, &wb, &p, &pp)) return 0u;
     if ((o1 >= 0 && !supports(p, pp, w[o1])) || (o2 >= 0 && !supports(p, pp, w[o2]))) return 0u;
     put(lambda, ia, wa, ib, wb, ib, wb);
     *point = p;
@@ -417,8 +424,8 @@ static unsigned gjk_segment(const agjk_vec3 *w, int exhaustive, double lambda[4]
     agjk_vec3 a = w[1], u = v3_sub(w[0], a);
     double ra = v3_dot(a, u);
     if (ra >= 0.0) return vertex_output(w, 2, lambda, point); /* <a, b - a> >= 0 */
-    double wa, wb; /* as edge_output, with no vertex outside */
-    if (!segment_foot(w, 1, 0, u, v3_norm2(u), &wa, &wb, point))
+    double wa, wb, pp; /* as edge_output, with no vertex outside */
+    if (!segment_foot(w, 1, 0, u, v3_norm2(u), &wa, &wb, point, &pp))
         return decline(w, 2, exhaustive, lambda, point);
     put(lambda, 1, wa, 0, wb, 0, wb);
     return 3u;
