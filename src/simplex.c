@@ -463,19 +463,21 @@ static unsigned gjk_triangle(const agjk_vec3 *w, int exhaustive, double lambda[4
  * Its candidate when the foot lies inside it and the Gram form of the KKT
  * test for w_k (<p, e_k> det = r_k det + l_i g_ik + l_j g_jk >= 0) passes.
  * *taken is set to 1 + k when the face holds the answer but is too thin for
- * the Gram form. The Gram matrix comes as its diagonal gd[i] = g_ii and
- * its off-diagonal go[i + j - 1] = g_ij (i != j). Inline, with the indices
- * variable: one copy serves all three faces (gjk_tetrahedron's loop),
- * without a call's spills. */
-static inline unsigned tetra_face(const agjk_vec3 *w, const agjk_vec3 *e, const double *gd,
-                                  const double *go, const double *r, int i, int j, int k,
-                                  int *taken, double lambda[4], agjk_vec3 *point) {
-    double gii = gd[i], gjj = gd[j], gij = go[i + j - 1], ri = r[i], rj = r[j];
+ * the Gram form. The face leaving out w_k is (a, w_i, w_j) with i = k + 1,
+ * j = k + 2 (mod 3). The Gram matrix comes as its diagonal gd[m] = g_mm and
+ * its off-diagonal gx[m] = g of the other two indices (g12, g02, g01).
+ * Inline, with k variable, without a call's spills. */
+static AGJK__ALWAYS_INLINE unsigned tetra_face(const agjk_vec3 *w, const agjk_vec3 *e,
+                                               const double *gd, const double *gx,
+                                               const double *r, int k, int *taken,
+                                               double lambda[4], agjk_vec3 *point) {
+    int i = k == 2 ? 0 : k + 1, j = k == 0 ? 2 : k - 1;
+    double gii = gd[i], gjj = gd[j], gij = gx[k], ri = r[i], rj = r[j];
     double det = gii * gjj - gij * gij;
     double li = rj * gij - ri * gjj, lj = ri * gij - rj * gii;
     double la = det - li - lj;
     if (!(li > 0.0 && lj > 0.0 && la > 0.0)) return 0u;
-    if (!(r[k] * det + li * go[i + k - 1] + lj * go[j + k - 1] >= 0.0)) return 0u;
+    if (!(r[k] * det + li * gx[j] + lj * gx[i] >= 0.0)) return 0u;
     *taken = 1 + k;
     if (!(det > WELL_CONDITIONED * gii * gjj)) return 0u;
     /* |w_i|^2 - |a|^2 = 2 r_i + g_ii: the vertex nearest the origin */
@@ -558,34 +560,32 @@ static unsigned gjk_tetrahedron(const agjk_vec3 *w, int exhaustive, double lambd
     r[1] = v3_dot(a, e[1]);
     r[2] = v3_dot(a, e[2]);
     if (r[0] >= 0.0 && r[1] >= 0.0 && r[2] >= 0.0) return vertex_output(w, 4, lambda, point);
-    /* The Gram matrix: diagonal gd[i] = g_ii, off-diagonal go[i + j - 1] =
-     * g_ij (g01, g02, g12). */
-    double gd[3], go[3];
+    /* The Gram matrix: diagonal gd[m] = g_mm, off-diagonal gx[m] = g of the
+     * two indices other than m. */
+    double gd[3], gx[3];
     gd[0] = v3_norm2(e[0]);
     gd[1] = v3_norm2(e[1]);
     gd[2] = v3_norm2(e[2]);
-    go[0] = v3_dot(e[0], e[1]);
-    go[2] = v3_dot(e[1], e[2]);
-    go[1] = v3_dot(e[2], e[0]);
+    gx[2] = v3_dot(e[0], e[1]);
+    gx[0] = v3_dot(e[1], e[2]);
+    gx[1] = v3_dot(e[2], e[0]);
     /* The faces through a, then its edges: the first that holds the answer;
      * then the inside; else (beyond the previous face, borderline cases):
      * the exhaustive projection. The face tried first leaves out the vertex
      * with the largest <a, e_k>, the one farthest back along a (right ~90%
      * of the time in GJK runs on ellipsoids and boxes); then the others in
-     * index order. The face leaving out w_k is (a, w_{k+1}, w_{k+2}), indices
-     * mod 3. */
+     * index order. */
     int back = r[0] >= r[1] ? (r[0] >= r[2] ? 0 : 2) : (r[1] >= r[2] ? 1 : 2);
     int taken = 0;
-    unsigned mask = 0u;
-    for (int t = 0; t < 3 && !mask && !taken; ++t) {
-        int k = t == 0 ? back : (t - 1 < back ? t - 1 : t);
-        int i = k == 2 ? 0 : k + 1, j = k == 0 ? 2 : k - 1;
-        mask = tetra_face(w, e, gd, go, r, i, j, k, &taken, lambda, point);
-    }
+    unsigned mask = tetra_face(w, e, gd, gx, r, back, &taken, lambda, point);
+    if (!mask && !taken)
+        mask = tetra_face(w, e, gd, gx, r, back == 0 ? 1 : 0, &taken, lambda, point);
+    if (!mask && !taken)
+        mask = tetra_face(w, e, gd, gx, r, back == 2 ? 1 : 2, &taken, lambda, point);
     if (!mask && !taken) {
-        mask = tetra_edge(w, 0, 1, 2, gd[0], go[0], go[1], r[0], r[1], r[2], lambda, point);
-        if (!mask) mask = tetra_edge(w, 1, 2, 0, gd[1], go[2], go[0], r[1], r[2], r[0], lambda, point);
-        if (!mask) mask = tetra_edge(w, 2, 0, 1, gd[2], go[1], go[2], r[2], r[0], r[1], lambda, point);
+        mask = tetra_edge(w, 0, 1, 2, gd[0], gx[2], gx[1], r[0], r[1], r[2], lambda, point);
+        if (!mask) mask = tetra_edge(w, 1, 2, 0, gd[1], gx[0], gx[2], r[1], r[2], r[0], lambda, point);
+        if (!mask) mask = tetra_edge(w, 2, 0, 1, gd[2], gx[1], gx[0], r[2], r[0], r[1], lambda, point);
         /* GJK's last step on overlapping shapes: the origin enclosed. */
         if (!mask) mask = tetra_inside(w, lambda, point);
     }
