@@ -377,8 +377,9 @@ static inline int segment_foot(const agjk_vec3 *w, int ia, int ib, agjk_vec3 u, 
  * gbb = |b - a|^2: the foot of the origin when it lies strictly inside the
  * edge and passes the KKT test for w[o1], w[o2] (indices < 0: none). Returns
  * the support mask, or 0. */
-static unsigned edge_output(const agjk_vec3 *w, int n, int ib, double ra, double gbb, int o1,
-                            int o2, double lambda[4], agjk_vec3 *point) {
+static AGJK__ALWAYS_INLINE unsigned edge_candidate(const agjk_vec3 *w, int n, int ib, double ra,
+                                                   double gbb, int o1, int o2, double lambda[4],
+                                                   agjk_vec3 *point) {
     int ia = n - 1;
     double wa, wb, pp;
     agjk_vec3 p;
@@ -388,6 +389,13 @@ static unsigned edge_output(const agjk_vec3 *w, int n, int ib, double ra, double
     put(lambda, ia, wa, ib, wb, ib, wb);
     *point = p;
     return (1u << ia) | (1u << ib);
+}
+
+/* The same, out of line, for the tetrahedron's rare edge cases. */
+static AGJK__NOINLINE unsigned edge_output(const agjk_vec3 *w, int n, int ib, double ra,
+                                           double gbb, int o1, int o2, double lambda[4],
+                                           agjk_vec3 *point) {
+    return edge_candidate(w, n, ib, ra, gbb, o1, o2, lambda, point);
 }
 
 /* Candidate in the face (a, w[ib], w[ic]), a = w[n-1], whose Gram weights
@@ -452,9 +460,8 @@ static unsigned gjk_triangle(const agjk_vec3 *w, int exhaustive, double lambda[4
      * the previous simplex, which held the previous, farther iterate); first
      * the one beyond whose line the foot lies. */
     unsigned mask = 0u;
-    if (lc <= 0.0) mask = edge_output(w, 3, 0, ru, uu, 1, -1, lambda, point);
-    if (!mask) mask = edge_output(w, 3, 1, rv, vv, 0, -1, lambda, point);
-    if (!mask && lc > 0.0) mask = edge_output(w, 3, 0, ru, uu, 1, -1, lambda, point);
+    for (int t = 0, ib = lc <= 0.0 ? 0 : 1; t < 2 && !mask; ++t, ib = 1 - ib)
+        mask = edge_candidate(w, 3, ib, ib ? rv : ru, ib ? vv : uu, 1 - ib, -1, lambda, point);
     return mask ? mask : decline(w, 3, exhaustive, lambda, point);
 }
 
