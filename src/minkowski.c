@@ -27,7 +27,8 @@ int agjk__pose_is_valid(const agjk_pose *pose) {
 /* Limits of the common support path for the current scale (see agjk__minkowski). */
 static void set_limits(agjk__minkowski *md) {
     double limit = AGJK__SOLVER_SIZE_LIMIT / md->scale;
-    md->raw_limit = limit < AGJK_MAX_COORDINATE ? limit : AGJK_MAX_COORDINATE;
+    md->point_limit = limit < AGJK_MAX_COORDINATE ? limit : AGJK_MAX_COORDINATE;
+    md->raw_limit = md->scale == 1.0 ? md->point_limit : -1.0;
     /* A tiny problem (scale > 1) needs unit-size directions: a small direction
      * times its tiny coordinates would underflow and lose the sign. */
     md->direction_min = md->scale > 1.0 ? 1.0 : AGJK__DIRECTION_MIN;
@@ -73,8 +74,9 @@ void agjk__minkowski_init(agjk__minkowski *md, const agjk_shape *a, const agjk_p
     /* set_limits for scale 1, except that the problem's size is unknown until
      * the first support: unit-size directions until agjk__minkowski_set_scale
      * has seen it. */
-    md->raw_limit = AGJK__SOLVER_SIZE_LIMIT < AGJK_MAX_COORDINATE ? AGJK__SOLVER_SIZE_LIMIT
-                                                                   : AGJK_MAX_COORDINATE;
+    md->point_limit = AGJK__SOLVER_SIZE_LIMIT < AGJK_MAX_COORDINATE ? AGJK__SOLVER_SIZE_LIMIT
+                                                                     : AGJK_MAX_COORDINATE;
+    md->raw_limit = md->point_limit;
     md->direction_min = 1.0;
 }
 
@@ -118,16 +120,26 @@ agjk_vec3 agjk__minkowski_rescue_direction(const agjk__minkowski *md, agjk_vec3 
     return dm > 0.0 && dm <= DBL_MAX ? v3_scale_to_unit(d, dm) : d;
 }
 
-void agjk__minkowski_rescue_points(agjk__minkowski *md, agjk_vec3 *pa, agjk_vec3 *pb) {
-    if (!v3_in_range(*pa) || !v3_in_range(*pb)) {
-        md->bad_support = 1;
-        *pa = v3(0.0, 0.0, 0.0);
-        *pb = v3(0.0, 0.0, 0.0);
-        return;
+void agjk__minkowski_points_slow(agjk__minkowski *md, agjk_vec3 *pa, agjk_vec3 *pb) {
+    double l1 = v3_norm1(*pa) + v3_norm1(*pb);
+    if (!(l1 <= md->point_limit)) {
+        if (!v3_in_range(*pa) || !v3_in_range(*pb)) {
+            md->bad_support = 1;
+            *pa = v3(0.0, 0.0, 0.0);
+            *pb = v3(0.0, 0.0, 0.0);
+            return; /* the magnitude is at least 0 already */
+        }
+        /* A support point far larger than the size the scale was chosen for
+         * (a first support at a denormal vertex, say) would overflow: lower
+         * the scale; the solver follows (md->rescaled). */
+        double raw = v3_maxabs(*pa) + v3_maxabs(*pb);
+        if (raw * md->scale > AGJK__SOLVER_SIZE_LIMIT) shrink(md, raw);
     }
-    /* A support point far larger than the size the scale was chosen for (a
-     * first support at a denormal vertex, say) would overflow: lower the
-     * scale; the solver follows (md->rescaled). */
     double raw = v3_maxabs(*pa) + v3_maxabs(*pb);
-    if (raw * md->scale > AGJK__SOLVER_SIZE_LIMIT) shrink(md, raw);
+    if (md->scale != 1.0) {
+        *pa = v3_scale(*pa, md->scale); /* exact: a power of two */
+        *pb = v3_scale(*pb, md->scale);
+        raw *= md->scale;
+    }
+    if (raw > md->magnitude) agjk__minkowski_grow(md, raw);
 }

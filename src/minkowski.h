@@ -38,8 +38,12 @@ typedef struct agjk__minkowski {
     double noise_floor;
     /* The common path of agjk__minkowski_support needs no rescue when the raw
      * support points' 1-norms add up to at most raw_limit (caller's units) and the
-     * direction's max |d_i| lies in [direction_min, AGJK__DIRECTION_MAX]. */
+     * direction's max |d_i| lies in [direction_min, AGJK__DIRECTION_MAX].
+     * point_limit is that bound for the current scale; raw_limit equals it at
+     * scale 1 and is -1 otherwise, so that the common path never multiplies
+     * by the scale (agjk__minkowski_points_slow does). */
     double raw_limit;
+    double point_limit;
     double direction_min;
     /* Product of the factors agjk__minkowski_shrink applied since the solver
      * last looked; the solver multiplies its own state by it and resets it. */
@@ -73,11 +77,14 @@ static inline double agjk__minkowski_set_scale(agjk__minkowski *md); /* below */
 double agjk__minkowski_rescale_extreme(agjk__minkowski *md, double size);
 
 /* The rare paths of agjk__minkowski_support, out of line: a direction outside
- * the safe range is brought to unit size; raw support points beyond raw_limit
- * are either rejected (non-finite or beyond AGJK_MAX_COORDINATE: bad_support)
- * or make the scale shrink (md->rescaled records the factor). */
+ * the safe range is brought to unit size; raw support points beyond
+ * point_limit are either rejected (non-finite or beyond AGJK_MAX_COORDINATE:
+ * bad_support, both points then zero) or make the scale shrink
+ * (md->rescaled records the factor); then (any point past raw_limit comes
+ * here, so every one when the scale is not 1) the points are brought to
+ * solver units and the magnitude grows to their max norms if larger. */
 agjk_vec3 agjk__minkowski_rescue_direction(const agjk__minkowski *md, agjk_vec3 d);
-void agjk__minkowski_rescue_points(agjk__minkowski *md, agjk_vec3 *pa, agjk_vec3 *pb);
+void agjk__minkowski_points_slow(agjk__minkowski *md, agjk_vec3 *pa, agjk_vec3 *pb);
 
 static inline double agjk__minkowski_set_scale(agjk__minkowski *md) {
     double size = md->magnitude;
@@ -177,21 +184,22 @@ static AGJK__ALWAYS_INLINE void agjk__minkowski_support(agjk__minkowski *md, agj
     agjk_vec3 pa, pb;
     agjk__shape_support(md->support_a, md->data_a, na, &pa, &md->hint_a, direct);
     agjk__shape_support(md->support_b, md->data_b, db, &pb, &md->hint_b, direct);
-    /* One test covers NaN, Inf, AGJK_MAX_COORDINATE and the solver's size
-     * limit: the 1-norm propagates NaN and bounds every coordinate. The
-     * max-norms come from the same absolute values. */
+    /* One test covers NaN, Inf, AGJK_MAX_COORDINATE, the solver's size
+     * limit and a scale other than 1: the 1-norm propagates NaN and bounds
+     * every coordinate. */
     double l1 = v3_norm1(pa) + v3_norm1(pb);
-    double raw = v3_maxabs(pa) + v3_maxabs(pb);
-    if (!(l1 <= md->raw_limit)) {
-        agjk__minkowski_rescue_points(md, &pa, &pb);
-        raw = v3_maxabs(pa) + v3_maxabs(pb);
+    if (l1 <= md->raw_limit) {
+        /* The magnitude is the largest sum of max norms. Each computed
+         * 1-norm is at least the max norm (rounded sums of non-negative terms
+         * are monotone), so l1 >= that sum, bit for bit: only a 1-norm above
+         * the magnitude can raise it, and the max norms are taken then only. */
+        if (l1 > md->magnitude) {
+            double raw = v3_maxabs(pa) + v3_maxabs(pb);
+            if (raw > md->magnitude) agjk__minkowski_grow(md, raw);
+        }
+    } else {
+        agjk__minkowski_points_slow(md, &pa, &pb);
     }
-    if (md->scale != 1.0) {
-        pa = v3_scale(pa, md->scale); /* exact: a power of two */
-        pb = v3_scale(pb, md->scale);
-        raw *= md->scale;
-    }
-    if (raw > md->magnitude) agjk__minkowski_grow(md, raw);
     agjk_vec3 b = v3_add(m3_mul(&md->rotation[0][0], pb), md->translation);
     out->w = v3_sub(pa, b);
     out->a = pa;

@@ -35,11 +35,13 @@ static inline agjk_vec3 agjk__segment_point(const agjk_capsule *c, agjk_vec3 d) 
  * answers stay bit-equivariant. */
 static inline int agjk__ellipsoid_point(const agjk_ellipsoid *e, agjk_vec3 d, agjk_vec3 *out) {
     agjk_vec3 r = e->radii;
-    agjk_vec3 dd = v3(r.x * d.x, r.y * d.y, r.z * d.z);
-    double n2 = v3_norm2(dd);
+    double x = r.x * d.x, y = r.y * d.y, z = r.z * d.z; /* D d */
+    double n2 = x * x + y * y + z * z;
     if (!(n2 >= 0x1p-900 && n2 <= 0x1p900)) return 0;
     double inv = 1.0 / sqrt(n2);
-    *out = v3(r.x * dd.x * inv, r.y * dd.y * inv, r.z * dd.z * inv);
+    out->x = r.x * x * inv;
+    out->y = r.y * y * inv;
+    out->z = r.z * z * inv;
     return 1;
 }
 

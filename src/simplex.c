@@ -350,16 +350,24 @@ static unsigned vertex_output(const agjk_vec3 *w, int n, double lambda[4], agjk_
 
 /* The foot of the origin on the segment a-b, a = w[ia] the newest point,
  * b = w[ib] an older one, u = b - a, uu = |u|^2, when it lies strictly
- * inside: its weights on a and b and the point. Measured from b with the
- * weight of a computed directly, exactly as the exhaustive projection does
- * (bit for bit: the solver's path does not depend on which one projects),
- * with the same cleanup along the segment (segment_cleanup). Returns 0
- * otherwise. */
+ * inside: its weights on a and b, the point and its squared norm. Measured
+ * from b with the weight of a computed directly, exactly as the exhaustive
+ * projection does (bit for bit: the solver's path does not depend on which
+ * one projects), with the same cleanup along the segment (segment_cleanup,
+ * written out here so that |p|^2, which its test needs, serves the caller's
+ * KKT test too). Returns 0 otherwise. */
 static inline int segment_foot(const agjk_vec3 *w, int ia, int ib, agjk_vec3 u, double uu,
-                               double *wa, double *wb, agjk_vec3 *p) {
+                               double *wa, double *wb, agjk_vec3 *p, double *pp) {
     agjk_vec3 b = w[ib];
     double s = v3_dot(b, u) / uu; /* p = b + s (a - b) */
-    *p = segment_cleanup(v3_lerp2(b, 1.0 - s, w[ia], s), b, u, uu);
+    agjk_vec3 q = v3_lerp2(b, 1.0 - s, w[ia], s);
+    double qq = v3_norm2(q);
+    if (v3_norm2(b) > 0x1p40 * qq) {
+        q = v3_sub(q, v3_scale(u, v3_dot(q, u) / uu));
+        qq = v3_norm2(q);
+    }
+    *p = q;
+    *pp = qq;
     *wa = s;
     *wb = 1.0 - s;
     return s > 0.0 && s < 1.0; /* also false for uu = 0 */
@@ -369,33 +377,39 @@ static inline int segment_foot(const agjk_vec3 *w, int ia, int ib, agjk_vec3 u, 
  * gbb = |b - a|^2: the foot of the origin when it lies strictly inside the
  * edge and passes the KKT test for w[o1], w[o2] (indices < 0: none). Returns
  * the support mask, or 0. */
-static unsigned edge_output(const agjk_vec3 *w, int n, int ib, double ra, double gbb, int o1,
-                            int o2, double lambda[4], agjk_vec3 *point) {
+static AGJK__ALWAYS_INLINE unsigned edge_candidate(const agjk_vec3 *w, int n, int ib, double ra,
+                                                   double gbb, int o1, int o2, double lambda[4],
+                                                   agjk_vec3 *point) {
     int ia = n - 1;
-    double wa, wb;
+    double wa, wb, pp;
     agjk_vec3 p;
     if (!(-ra > 0.0 && -ra < gbb)) return 0u; /* the foot is outside the edge */
-    if (!segment_foot(w, ia, ib, v3_sub(w[ib], w[ia]), gbb, &wa, &wb, &p)) return 0u;
-    double pp = v3_norm2(p);
+    if (!segment_foot(w, ia, ib, v3_sub(w[ib], w[ia]), gbb, &wa, &wb, &p, &pp)) return 0u;
     if ((o1 >= 0 && !supports(p, pp, w[o1])) || (o2 >= 0 && !supports(p, pp, w[o2]))) return 0u;
     put(lambda, ia, wa, ib, wb, ib, wb);
     *point = p;
     return (1u << ia) | (1u << ib);
 }
 
+/* The same, out of line, for the tetrahedron's rare edge cases. */
+static AGJK__NOINLINE unsigned edge_output(const agjk_vec3 *w, int n, int ib, double ra,
+                                           double gbb, int o1, int o2, double lambda[4],
+                                           agjk_vec3 *point) {
+    return edge_candidate(w, n, ib, ra, gbb, o1, o2, lambda, point);
+}
+
 /* Candidate in the face (a, w[ib], w[ic]), a = w[n-1], whose Gram weights
  * lb, lc, la (times det > 0) are positive: the foot n <n, q> / |n|^2 from
- * the normal n = u x v, u = w[ib] - a, v = w[ic] - a, and the vertex
- * q = w[iq] of the face nearest the origin (the error of <n, q> grows with
- * |q|; accurate even when the foot is much nearer the origin than a), if it
- * passes the KKT test for w[o] (o < 0: none). Returns the support mask, or
- * 0. */
-static inline unsigned face_output(const agjk_vec3 *w, int n, int ib, int ic, int iq, double det,
-                                   double lb, double lc, double la, int o, double lambda[4],
-                                   agjk_vec3 *point) {
+ * the normal n = u x v, u = w[ib] - a, v = w[ic] - a (the caller's edge
+ * vectors, already computed), and the vertex q = w[iq] of the face nearest
+ * the origin (the error of <n, q> grows with |q|; accurate even when the
+ * foot is much nearer the origin than a), if it passes the KKT test for
+ * w[o] (o < 0: none). Returns the support mask, or 0. */
+static inline unsigned face_output(const agjk_vec3 *w, int n, int ib, int ic, agjk_vec3 u,
+                                   agjk_vec3 v, int iq, double det, double lb, double lc,
+                                   double la, int o, double lambda[4], agjk_vec3 *point) {
     int ia = n - 1;
-    agjk_vec3 a = w[ia];
-    agjk_vec3 nrm = v3_cross(v3_sub(w[ib], a), v3_sub(w[ic], a));
+    agjk_vec3 nrm = v3_cross(u, v);
     agjk_vec3 f = v3_scale(nrm, v3_dot(nrm, w[iq]) / v3_norm2(nrm));
     double inv = 1.0 / det;
     double wa = la * inv, wb = lb * inv, wc = lc * inv;
@@ -418,8 +432,8 @@ static unsigned gjk_segment(const agjk_vec3 *w, int exhaustive, double lambda[4]
     agjk_vec3 a = w[1], u = v3_sub(w[0], a);
     double ra = v3_dot(a, u);
     if (ra >= 0.0) return vertex_output(w, 2, lambda, point); /* <a, b - a> >= 0 */
-    double wa, wb; /* as edge_output, with no vertex outside */
-    if (!segment_foot(w, 1, 0, u, v3_norm2(u), &wa, &wb, point))
+    double wa, wb, pp; /* as edge_output, with no vertex outside */
+    if (!segment_foot(w, 1, 0, u, v3_norm2(u), &wa, &wb, point, &pp))
         return decline(w, 2, exhaustive, lambda, point);
     put(lambda, 1, wa, 0, wb, 0, wb);
     return 3u;
@@ -438,7 +452,7 @@ static unsigned gjk_triangle(const agjk_vec3 *w, int exhaustive, double lambda[4
         double db = 2.0 * ru + uu, dc = 2.0 * rv + vv;
         int iq = db < dc ? (db < 0.0 ? 0 : 2) : (dc < 0.0 ? 1 : 2);
         unsigned mask = det > WELL_CONDITIONED * uu * vv
-                            ? face_output(w, 3, 0, 1, iq, det, lb, lc, la, -1, lambda, point)
+                            ? face_output(w, 3, 0, 1, u, v, iq, det, lb, lc, la, -1, lambda, point)
                             : 0u;
         return mask ? mask : decline(w, 3, exhaustive, lambda, point);
     }
@@ -446,9 +460,8 @@ static unsigned gjk_triangle(const agjk_vec3 *w, int exhaustive, double lambda[4
      * the previous simplex, which held the previous, farther iterate); first
      * the one beyond whose line the foot lies. */
     unsigned mask = 0u;
-    if (lc <= 0.0) mask = edge_output(w, 3, 0, ru, uu, 1, -1, lambda, point);
-    if (!mask) mask = edge_output(w, 3, 1, rv, vv, 0, -1, lambda, point);
-    if (!mask && lc > 0.0) mask = edge_output(w, 3, 0, ru, uu, 1, -1, lambda, point);
+    for (int t = 0, ib = lc <= 0.0 ? 0 : 1; t < 2 && !mask; ++t, ib = 1 - ib)
+        mask = edge_candidate(w, 3, ib, ib ? rv : ru, ib ? vv : uu, 1 - ib, -1, lambda, point);
     return mask ? mask : decline(w, 3, exhaustive, lambda, point);
 }
 
@@ -457,21 +470,27 @@ static unsigned gjk_triangle(const agjk_vec3 *w, int exhaustive, double lambda[4
  * Its candidate when the foot lies inside it and the Gram form of the KKT
  * test for w_k (<p, e_k> det = r_k det + l_i g_ik + l_j g_jk >= 0) passes.
  * *taken is set to 1 + k when the face holds the answer but is too thin for
- * the Gram form. */
-static unsigned tetra_face(const agjk_vec3 *w, int i, int j, int k, double gii, double gjj,
-                           double gij, double gik, double gjk, double ri, double rj, double rk,
-                           int *taken, double lambda[4], agjk_vec3 *point) {
+ * the Gram form. The face leaving out w_k is (a, w_i, w_j) with i = k + 1,
+ * j = k + 2 (mod 3). The Gram matrix comes as its diagonal gd[m] = g_mm and
+ * its off-diagonal gx[m] = g of the other two indices (g12, g02, g01).
+ * Inline, with k variable, without a call's spills. */
+static AGJK__ALWAYS_INLINE unsigned tetra_face(const agjk_vec3 *w, const agjk_vec3 *e,
+                                               const double *gd, const double *gx,
+                                               const double *r, int k, int *taken,
+                                               double lambda[4], agjk_vec3 *point) {
+    int i = k == 2 ? 0 : k + 1, j = k == 0 ? 2 : k - 1;
+    double gii = gd[i], gjj = gd[j], gij = gx[k], ri = r[i], rj = r[j];
     double det = gii * gjj - gij * gij;
     double li = rj * gij - ri * gjj, lj = ri * gij - rj * gii;
     double la = det - li - lj;
     if (!(li > 0.0 && lj > 0.0 && la > 0.0)) return 0u;
-    if (!(rk * det + li * gik + lj * gjk >= 0.0)) return 0u;
+    if (!(r[k] * det + li * gx[j] + lj * gx[i] >= 0.0)) return 0u;
     *taken = 1 + k;
     if (!(det > WELL_CONDITIONED * gii * gjj)) return 0u;
     /* |w_i|^2 - |a|^2 = 2 r_i + g_ii: the vertex nearest the origin */
     double di = 2.0 * ri + gii, dj = 2.0 * rj + gjj;
     int iq = di < dj ? (di < 0.0 ? i : 3) : (dj < 0.0 ? j : 3);
-    return face_output(w, 4, i, j, iq, det, li, lj, la, k, lambda, point);
+    return face_output(w, 4, i, j, e[i], e[j], iq, det, li, lj, la, k, lambda, point);
 }
 
 /* The edge a-w_i of the tetrahedron: its candidate when the Gram form of the
@@ -539,33 +558,41 @@ static unsigned thin_face(const agjk_vec3 *w, int taken, double lambda[4], agjk_
 static unsigned gjk_tetrahedron(const agjk_vec3 *w, int exhaustive, double lambda[4],
                                 agjk_vec3 *point) {
     agjk_vec3 a = w[3];
-    agjk_vec3 e0 = v3_sub(w[0], a), e1 = v3_sub(w[1], a), e2 = v3_sub(w[2], a);
-    double r0 = v3_dot(a, e0), r1 = v3_dot(a, e1), r2 = v3_dot(a, e2);
-    if (r0 >= 0.0 && r1 >= 0.0 && r2 >= 0.0) return vertex_output(w, 4, lambda, point);
-    double g00 = v3_norm2(e0), g11 = v3_norm2(e1), g22 = v3_norm2(e2);
-    double g01 = v3_dot(e0, e1), g12 = v3_dot(e1, e2), g20 = v3_dot(e2, e0);
+    agjk_vec3 e[3];
+    e[0] = v3_sub(w[0], a);
+    e[1] = v3_sub(w[1], a);
+    e[2] = v3_sub(w[2], a);
+    double r[3];
+    r[0] = v3_dot(a, e[0]);
+    r[1] = v3_dot(a, e[1]);
+    r[2] = v3_dot(a, e[2]);
+    if (r[0] >= 0.0 && r[1] >= 0.0 && r[2] >= 0.0) return vertex_output(w, 4, lambda, point);
+    /* The Gram matrix: diagonal gd[m] = g_mm, off-diagonal gx[m] = g of the
+     * two indices other than m. */
+    double gd[3], gx[3];
+    gd[0] = v3_norm2(e[0]);
+    gd[1] = v3_norm2(e[1]);
+    gd[2] = v3_norm2(e[2]);
+    gx[2] = v3_dot(e[0], e[1]);
+    gx[0] = v3_dot(e[1], e[2]);
+    gx[1] = v3_dot(e[2], e[0]);
     /* The faces through a, then its edges: the first that holds the answer;
      * then the inside; else (beyond the previous face, borderline cases):
      * the exhaustive projection. The face tried first leaves out the vertex
      * with the largest <a, e_k>, the one farthest back along a (right ~90%
-     * of the time in GJK runs on ellipsoids and boxes). */
-    int back = r0 >= r1 ? (r0 >= r2 ? 0 : 2) : (r1 >= r2 ? 1 : 2);
+     * of the time in GJK runs on ellipsoids and boxes); then the others in
+     * index order. */
+    int back = r[0] >= r[1] ? (r[0] >= r[2] ? 0 : 2) : (r[1] >= r[2] ? 1 : 2);
     int taken = 0;
-    unsigned mask;
-#define FACE_WITHOUT_0 tetra_face(w, 1, 2, 0, g11, g22, g12, g01, g20, r1, r2, r0, &taken, lambda, point)
-#define FACE_WITHOUT_1 tetra_face(w, 2, 0, 1, g22, g00, g20, g12, g01, r2, r0, r1, &taken, lambda, point)
-#define FACE_WITHOUT_2 tetra_face(w, 0, 1, 2, g00, g11, g01, g20, g12, r0, r1, r2, &taken, lambda, point)
-    mask = back == 0 ? FACE_WITHOUT_0 : back == 1 ? FACE_WITHOUT_1 : FACE_WITHOUT_2;
-    if (!mask && !taken && back != 0) mask = FACE_WITHOUT_0;
-    if (!mask && !taken && back != 1) mask = FACE_WITHOUT_1;
-    if (!mask && !taken && back != 2) mask = FACE_WITHOUT_2;
-#undef FACE_WITHOUT_0
-#undef FACE_WITHOUT_1
-#undef FACE_WITHOUT_2
+    unsigned mask = tetra_face(w, e, gd, gx, r, back, &taken, lambda, point);
+    if (!mask && !taken)
+        mask = tetra_face(w, e, gd, gx, r, back == 0 ? 1 : 0, &taken, lambda, point);
+    if (!mask && !taken)
+        mask = tetra_face(w, e, gd, gx, r, back == 2 ? 1 : 2, &taken, lambda, point);
     if (!mask && !taken) {
-        mask = tetra_edge(w, 0, 1, 2, g00, g01, g20, r0, r1, r2, lambda, point);
-        if (!mask) mask = tetra_edge(w, 1, 2, 0, g11, g12, g01, r1, r2, r0, lambda, point);
-        if (!mask) mask = tetra_edge(w, 2, 0, 1, g22, g20, g12, r2, r0, r1, lambda, point);
+        mask = tetra_edge(w, 0, 1, 2, gd[0], gx[2], gx[1], r[0], r[1], r[2], lambda, point);
+        if (!mask) mask = tetra_edge(w, 1, 2, 0, gd[1], gx[0], gx[2], r[1], r[2], r[0], lambda, point);
+        if (!mask) mask = tetra_edge(w, 2, 0, 1, gd[2], gx[1], gx[0], r[2], r[0], r[1], lambda, point);
         /* GJK's last step on overlapping shapes: the origin enclosed. */
         if (!mask) mask = tetra_inside(w, lambda, point);
     }
@@ -584,12 +611,11 @@ unsigned agjk__simplex_project_gjk_fast(const agjk_vec3 *w, int n, double lambda
 }
 
 unsigned agjk__simplex_project_gjk(const agjk_vec3 *w, int n, double lambda[4], agjk_vec3 *point) {
-    switch (n) {
-    case 1: return vertex_output(w, 1, lambda, point);
-    case 2: return gjk_segment(w, 1, lambda, point);
-    case 3: return gjk_triangle(w, 1, lambda, point);
-    default: return gjk_tetrahedron(w, 1, lambda, point);
-    }
+    /* Largest first: a tetrahedron is the usual case on curved shapes. */
+    if (n >= 4) return gjk_tetrahedron(w, 1, lambda, point);
+    if (n == 3) return gjk_triangle(w, 1, lambda, point);
+    if (n == 2) return gjk_segment(w, 1, lambda, point);
+    return vertex_output(w, 1, lambda, point);
 }
 
 agjk_status agjk_simplex_project_origin(const agjk_vec3 *vertices, int count,

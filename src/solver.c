@@ -46,7 +46,7 @@ typedef struct solver {
                            * retried support) */
 } solver;
 
-/* After a support that had to lower the scale (agjk__minkowski_rescue_points),
+/* After a support that had to lower the scale (agjk__minkowski_points_slow),
  * brings the solver's own state to the new units. Exact: powers of two. Rare,
  * so out of line. */
 static AGJK__NOINLINE AGJK__COLD void follow_rescale(solver *sv, agjk_vec3 *d) {
