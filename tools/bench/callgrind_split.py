@@ -36,6 +36,7 @@ vary (standard deviation below 0.5 call: one-iteration Boolean queries) the
 split is not identifiable and all of rest is reported as fixed.
 """
 import json
+import os
 import re
 import subprocess
 import sys
@@ -132,11 +133,16 @@ def function_files(path):
     return files
 
 
-def parse_dump(path):
+def parse_dump(path, own_object=None):
     """The cost lines of a dump: (function, function's file, line's file,
-    address or None, cost, callee or None for a call's inclusive cost)."""
+    address or None, cost, callee or None for a call's inclusive cost).
+    With own_object (the driver's path), addresses are kept only for code of
+    that object: an address in the dynamic linker or libc means nothing in
+    the driver's line table (and once fell inside agjk's code there)."""
     rows = []
     summary = None
+    ob = None
+    own = os.path.realpath(own_object) if own_object else None
     fl = fi = fn = None
     cfn = cfl = None
     pending_call = False
@@ -147,6 +153,9 @@ def parse_dump(path):
                 continue
             if line.startswith("summary:"):
                 summary = int(line.split()[1])
+                continue
+            if line.startswith("ob="):
+                ob = os.path.realpath(line[3:])
                 continue
             if line.startswith("fl="):
                 fl = fi = line[3:]
@@ -182,15 +191,17 @@ def parse_dump(path):
                 pending_call = False
                 callee = (cfn or "", cfl or "")
                 cfn = cfl = None
+            if own is not None and ob != own:
+                addr = None
             rows.append((fn or "", fl or "", fi or "", addr, cost, callee))
     return summary, rows
 
 
-def split_dump(path, lib, chains=None, bias=0):
+def split_dump(path, lib, chains=None, bias=0, binary=None):
     fn_cat = agjk_function_category if lib == "agjk" else coal_function_category
     files = function_files(path)
     totals = {SIMPLEX: 0, SUPPORT: 0, REST: 0}
-    summary, rows = parse_dump(path)
+    summary, rows = parse_dump(path, binary)
     for fn, fl, fi, addr, cost, callee in rows:
         if lib == "agjk" and chains is not None and addr is not None and addr - bias in chains:
             line_cat = frame_category(chains[addr - bias])
@@ -218,7 +229,7 @@ def agjk_chains(binary, dumps):
     entry: collection starts there, so its lowest address is the entry."""
     entry, addrs = None, set()
     for d in dumps:
-        for fn, fl, fi, addr, cost, callee in parse_dump(d)[1]:
+        for fn, fl, fi, addr, cost, callee in parse_dump(d, binary)[1]:
             if addr is None:
                 continue
             addrs.add(addr)
@@ -244,7 +255,7 @@ def main():
             if m:
                 calls.append(int(m.group(2)))
     chains, bias = (agjk_chains(binary, dumps) if lib == "agjk" and binary else (None, 0))
-    per = [split_dump(d, lib, chains, bias) for d in dumps]
+    per = [split_dump(d, lib, chains, bias, binary) for d in dumps]
     per = [p for p in per if p["total"] > 0]  # the final dump (program end) is empty
     if len(per) != len(calls):
         raise SystemExit("callgrind_split: %d queries but %d non-empty dumps"
