@@ -281,7 +281,10 @@ agjk_vec3 agjk__momentum_direction(const agjk__momentum *m, int k, agjk_vec3 x) 
         d = x;
         break;
     }
-    /* A zero or non-finite combination carries no direction: use the gradient. */
-    if (!v3_isfinite(d) || v3_maxabs(d) == 0.0) d = x;
+    /* A zero or non-finite combination carries no direction: use the
+     * gradient. (One test: the 1-norm is NaN or Inf with any such coordinate,
+     * and 0 only for the zero vector.) */
+    double n1 = v3_norm1(d);
+    if (!(n1 > 0.0 && n1 <= DBL_MAX)) d = x;
     return d;
 }

@@ -64,8 +64,18 @@ int measured_agjk(const agjk_query *q, agjk_result *res) {
 
 int measured_coal(void *query) { return coal_adapter_query_run(query); }
 
-/* The query as bench_solve() asks it: plain GJK, tolerance 1e-8, cap 1000,
- * no witness points; and the same for Coal. */
+/* The method of both libraries: plain GJK, or AGJK_WORK_METHOD=nesterov or
+ * polyak in the environment (a quick look at the momentum variants; the
+ * callgrind table is plain GJK). */
+static int work_method(void) {
+    const char *m = getenv("AGJK_WORK_METHOD");
+    if (m && strcmp(m, "nesterov") == 0) return 1;
+    if (m && strcmp(m, "polyak") == 0) return 2;
+    return 0;
+}
+
+/* The query as bench_solve() asks it: plain GJK (see work_method),
+ * tolerance 1e-8, cap 1000, no witness points; and the same for Coal. */
 static void agjk_query_init(agjk_query *q, const bench_set *set, const bench_problem *p,
                             const workload *w) {
     q->a = &set->shapes[p->a];
@@ -73,7 +83,8 @@ static void agjk_query_init(agjk_query *q, const bench_set *set, const bench_pro
     q->p = p;
     q->boolean = w->mode == BENCH_BOOLEAN;
     q->opt = agjk_default_options();
-    q->opt.method = AGJK_METHOD_GJK;
+    q->opt.method = (const agjk_method[]){AGJK_METHOD_GJK, AGJK_METHOD_NESTEROV,
+                                          AGJK_METHOD_POLYAK}[work_method()];
     q->opt.tolerance = 1e-8;
     q->opt.max_iterations = 1000;
     q->opt.compute = AGJK_COMPUTE_DISTANCE;
@@ -83,7 +94,7 @@ static void coal_desc_init(coal_query_desc *d, const agjk_query *q) {
     memset(d, 0, sizeof *d);
     coal_bench_pose(&q->p->pose_a, d->rotation_a, d->translation_a);
     coal_bench_pose(&q->p->pose_b, d->rotation_b, d->translation_b);
-    d->method = COAL_GJK;
+    d->method = (const int[]){COAL_GJK, COAL_NESTEROV, COAL_POLYAK}[work_method()];
     d->boolean = q->boolean;
     d->tolerance = 1e-8;
     d->max_iterations = 1000;
