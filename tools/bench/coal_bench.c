@@ -238,23 +238,64 @@ int coal_bench_different_work(const coal_bench_group *g) {
     return g->n > 0 && fabs(g->agjk_calls - g->coal_calls) > 0.05 * g->coal_calls;
 }
 
+void coal_bench_ratio_head(FILE *f, const char *first, const char *const *extra, int n_extra) {
+    int m, mode;
+    fprintf(f, "| %s | category |", first);
+    for (mode = 0; mode < 2; ++mode)
+        for (m = 0; m < 4; ++m)
+            fprintf(f, " %s %s |", mode ? "Boolean" : "distance", coal_bench_method_short[m]);
+    for (m = 0; m < n_extra; ++m) fprintf(f, " %s |", extra[m]);
+    fprintf(f, "\n|---|---|");
+    for (m = 0; m < 8 + n_extra; ++m) fprintf(f, "---|");
+    fprintf(f, "\n");
+}
+
+void coal_bench_tally_init(coal_bench_tally *t) { memset(t, 0, sizeof *t); }
+
+void coal_bench_tally_add(coal_bench_tally *t, const coal_bench_group *g, const char *set,
+                          const char *category, int mode, int m) {
+    double v = g->ratio_median;
+    int l = v > 1.0 ? 0 : 1;
+    if (!g->n) return;
+    if (coal_bench_different_work(g)) { /* not the same computation */
+        ++t->differ;
+        return;
+    }
+    ++t->cells;
+    t->target += v <= 0.8;
+    t->slower += v > 1.0;
+    if (t->len[l] + 100 < sizeof t->list[l])
+        t->len[l] += (size_t)snprintf(t->list[l] + t->len[l], sizeof t->list[l] - t->len[l],
+                                      "%s%s %s %s %s %.2f", t->len[l] ? "; " : "", set, category,
+                                      mode ? "Boolean" : "distance", coal_bench_method_short[m], v);
+}
+
+void coal_bench_tally_write(FILE *f, const coal_bench_tally *t, const char *lead,
+                            const char *where) {
+    fprintf(f, "%s the %d cells where both libraries made the same support calls "
+               "(%d \xe2\x80\xa0 cells left out): ", lead, t->cells, t->differ);
+    if (t->slower == 0)
+        fprintf(f, "agjk is as fast as Coal or faster in all.\n");
+    else if (t->slower == t->cells)
+        fprintf(f, "agjk is slower than Coal in all.\n");
+    else if (2 * t->slower > t->cells)
+        fprintf(f, "agjk is slower than Coal in %d; as fast or faster only in: %s.\n", t->slower,
+                t->list[1]);
+    else
+        fprintf(f, "agjk is slower than Coal in %d: %s.\n", t->slower, t->list[0]);
+    fprintf(f, "Target of issue 8 (agjk <= 0.8 x Coal)%s: met in %d of %d.\n\n", where, t->target,
+            t->cells);
+}
+
 /* The compact ratio table (the README's), to each of the n streams. */
 static void ratio_table(FILE **out, int nout, const bench_report *r, const coal_bench_data *d,
                         double *b0, double *b1, double *b2) {
-    int fam, c, m, mode, k, cells = 0, slower = 0, target = 0, differ = 0;
-    char list[2][8192]; /* [0] cells where agjk is slower, [1] where it is not */
-    size_t len[2] = {0, 0};
-    list[0][0] = list[1][0] = '\0';
-    for (k = 0; k < nout; ++k) {
-        fprintf(out[k], "| set | category |");
-        for (mode = 0; mode < 2; ++mode)
-            for (m = 0; m < 4; ++m)
-                fprintf(out[k], " %s %s |", mode ? "Boolean" : "distance",
-                        coal_bench_method_short[m]);
-        fprintf(out[k], " Boolean: agjk accel. / libccd MPR | agjk GJK / libccd GJK |\n|---|---|");
-        for (m = 0; m < 10; ++m) fprintf(out[k], "---|");
-        fprintf(out[k], "\n");
-    }
+    static const char *const ccd_columns[2] = {"Boolean: agjk accel. / libccd MPR",
+                                               "agjk GJK / libccd GJK"};
+    int fam, c, m, mode, k;
+    coal_bench_tally t;
+    coal_bench_tally_init(&t);
+    for (k = 0; k < nout; ++k) coal_bench_ratio_head(out[k], "set", ccd_columns, 2);
     for (fam = 0; fam < BENCH_FAMILY_COUNT; ++fam)
         for (c = 0; c < BENCH_CATEGORY_COUNT; ++c) {
             coal_bench_group g[2][4];
@@ -279,27 +320,9 @@ static void ratio_table(FILE **out, int nout, const bench_report *r, const coal_
                 fprintf(out[k], "\n");
             }
             for (mode = 0; mode < 2; ++mode)
-                for (m = 0; m < 4; ++m) {
-                    double v = g[mode][m].ratio_median;
-                    if (!g[mode][m].n) continue;
-                    if (coal_bench_different_work(&g[mode][m])) { /* not the same computation */
-                        ++differ;
-                        continue;
-                    }
-                    ++cells;
-                    target += v <= 0.8;
-                    {
-                        int l = v > 1.0 ? 0 : 1;
-                        slower += v > 1.0;
-                        if (len[l] + 100 < sizeof list[l])
-                            len[l] += (size_t)snprintf(list[l] + len[l], sizeof list[l] - len[l],
-                                                       "%s%s %s %s %s %.2f", len[l] ? "; " : "",
-                                                       bench_family_name(fam),
-                                                       bench_category_name(c),
-                                                       mode ? "Boolean" : "distance",
-                                                       coal_bench_method_short[m], v);
-                    }
-                }
+                for (m = 0; m < 4; ++m)
+                    coal_bench_tally_add(&t, &g[mode][m], bench_family_name(fam),
+                                         bench_category_name(c), mode, m);
         }
     for (k = 0; k < nout; ++k) {
         fprintf(out[k], "\nagjk time / Coal %s time for the same method on the same problem "
@@ -310,19 +333,7 @@ static void ratio_table(FILE **out, int nout, const bench_report *r, const coal_
                         "made different numbers of support calls (means more than 5%% apart): "
                         "their variants differ there, so the ratio compares different work.\n\n",
                 d->version);
-        fprintf(out[k], "Of the %d cells where both libraries made the same support calls "
-                        "(%d \xe2\x80\xa0 cells left out): ", cells, differ);
-        if (slower == 0)
-            fprintf(out[k], "agjk is as fast as Coal or faster in all.\n");
-        else if (slower == cells)
-            fprintf(out[k], "agjk is slower than Coal in all.\n");
-        else if (2 * slower > cells)
-            fprintf(out[k], "agjk is slower than Coal in %d; as fast or faster only in: %s.\n",
-                    slower, list[1]);
-        else
-            fprintf(out[k], "agjk is slower than Coal in %d: %s.\n", slower, list[0]);
-        fprintf(out[k], "Target of issue 8 (agjk <= 0.8 x Coal): met in %d of %d.\n\n", target,
-                cells);
+        coal_bench_tally_write(out[k], &t, "Of", "");
     }
 }
 

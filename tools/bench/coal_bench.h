@@ -66,6 +66,28 @@ int coal_bench_different_work(const coal_bench_group *g);
 /* A ratio table cell: bold when agjk is slower, a dagger when differ. */
 void coal_bench_cell(FILE *f, double v, int differ);
 
+/* A ratio table's header: `first` (the set's column title), the 8 method x
+ * mode columns, then the `extra` column titles (may be NULL). */
+void coal_bench_ratio_head(FILE *f, const char *first, const char *const *extra, int n_extra);
+
+/* What a ratio table adds up to: the cells where both libraries did the same
+ * work, those where agjk is slower and those at or below 0.8x, the cells left
+ * out (different work), and the cells of each kind by name. */
+typedef struct coal_bench_tally {
+    int cells, slower, target, differ;
+    char list[2][8192]; /* [0] cells where agjk is slower, [1] where it is not */
+    size_t len[2];
+} coal_bench_tally;
+void coal_bench_tally_init(coal_bench_tally *t);
+/* Counts the cell of group g (method index m into coal_bench_methods). */
+void coal_bench_tally_add(coal_bench_tally *t, const coal_bench_group *g, const char *set,
+                          const char *category, int mode, int m);
+/* "<lead> the N cells ...: agjk is slower than Coal in ...", then the
+ * target line; lead "Of" and where "", or e.g. "On the stress set, of" and
+ * " on the stress set". */
+void coal_bench_tally_write(FILE *f, const coal_bench_tally *t, const char *lead,
+                            const char *where);
+
 /* Appends the agjk/Coal section to <out>/tables.md (or, without Coal, how to
  * get it), writes <out>/coal.csv and coal-ratios.md, and prints the ratio
  * table on stdout. ccd: the libccd records (may be NULL). Returns 0 or -1. */

@@ -152,20 +152,10 @@ void bench_stress_free(bench_stress *s) {
  * then the summary over comparable cells, to each of the n streams. */
 static void ratio_table(FILE **out, int nout, const bench_stress *s, double *b0, double *b1,
                         double *b2) {
-    int k, c, m, mode, o, cells = 0, slower = 0, target = 0, differ = 0;
-    char list[2][8192]; /* [0] cells where agjk is slower, [1] where it is not */
-    size_t len[2] = {0, 0};
-    list[0][0] = list[1][0] = '\0';
-    for (o = 0; o < nout; ++o) {
-        fprintf(out[o], "| stress set | category |");
-        for (mode = 0; mode < 2; ++mode)
-            for (m = 0; m < 4; ++m)
-                fprintf(out[o], " %s %s |", mode ? "Boolean" : "distance",
-                        coal_bench_method_short[m]);
-        fprintf(out[o], "\n|---|---|");
-        for (m = 0; m < 8; ++m) fprintf(out[o], "---|");
-        fprintf(out[o], "\n");
-    }
+    int k, c, m, mode, o;
+    coal_bench_tally t;
+    coal_bench_tally_init(&t);
+    for (o = 0; o < nout; ++o) coal_bench_ratio_head(out[o], "stress set", NULL, 0);
     for (k = 0; k < STRESS_COUNT; ++k) {
         if (!s->data[k]) continue;
         for (c = 0; c < BENCH_CATEGORY_COUNT; ++c) {
@@ -187,24 +177,9 @@ static void ratio_table(FILE **out, int nout, const bench_stress *s, double *b0,
                 fprintf(out[o], "\n");
             }
             for (mode = 0; mode < 2; ++mode)
-                for (m = 0; m < 4; ++m) {
-                    double v = g[mode][m].ratio_median;
-                    int l = v > 1.0 ? 0 : 1;
-                    if (!g[mode][m].n) continue;
-                    if (coal_bench_different_work(&g[mode][m])) {
-                        ++differ;
-                        continue;
-                    }
-                    ++cells;
-                    target += v <= 0.8;
-                    slower += v > 1.0;
-                    if (len[l] + 100 < sizeof list[l])
-                        len[l] += (size_t)snprintf(list[l] + len[l], sizeof list[l] - len[l],
-                                                   "%s%s %s %s %s %.2f", len[l] ? "; " : "",
-                                                   families[k].name, bench_category_name(c),
-                                                   mode ? "Boolean" : "distance",
-                                                   coal_bench_method_short[m], v);
-                }
+                for (m = 0; m < 4; ++m)
+                    coal_bench_tally_add(&t, &g[mode][m], families[k].name,
+                                         bench_category_name(c), mode, m);
         }
     }
     for (o = 0; o < nout; ++o) {
@@ -212,19 +187,7 @@ static void ratio_table(FILE **out, int nout, const bench_stress *s, double *b0,
                         "in the table above (median over problems of the per-problem ratio); "
                         "< 1: agjk faster, **bold**: agjk slower, \xe2\x80\xa0: different numbers "
                         "of support calls (means more than 5%% apart).\n\n");
-        fprintf(out[o], "On the stress set, of the %d cells where both libraries made the same "
-                        "support calls (%d \xe2\x80\xa0 cells left out): ", cells, differ);
-        if (slower == 0)
-            fprintf(out[o], "agjk is as fast as Coal or faster in all.\n");
-        else if (slower == cells)
-            fprintf(out[o], "agjk is slower than Coal in all.\n");
-        else if (2 * slower > cells)
-            fprintf(out[o], "agjk is slower than Coal in %d; as fast or faster only in: %s.\n",
-                    slower, list[1]);
-        else
-            fprintf(out[o], "agjk is slower than Coal in %d: %s.\n", slower, list[0]);
-        fprintf(out[o], "Target of issue 8 (agjk <= 0.8 x Coal) on the stress set: met in %d of "
-                        "%d.\n\n", target, cells);
+        coal_bench_tally_write(out[o], &t, "On the stress set, of", " on the stress set");
     }
 }
 
