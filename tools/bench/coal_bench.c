@@ -250,6 +250,43 @@ void coal_bench_ratio_head(FILE *f, const char *first, const char *const *extra,
     fprintf(f, "\n");
 }
 
+void coal_bench_detail_row(FILE *md, FILE *csv, const char *set, int category, int mode, int m,
+                           const coal_bench_group *g, int with_misses) {
+    const char *method = bench_method_name(coal_bench_methods[m]);
+    fprintf(md, "| %s | %s | %s | %s | %d | %.0f | %.0f | %.2f | %.2f | %d | %.1f / %.1f | "
+                "%.1f / %.1f | %d / %d | %d / %d | %d / %d |",
+            set, bench_category_name(category), mode ? "Boolean" : "distance", method, g->n,
+            g->agjk_ns, g->coal_ns, g->ratio_median, g->ratio_of_means, g->slower, g->agjk_it,
+            g->coal_it, g->agjk_calls, g->coal_calls, g->agjk_wrong, g->coal_wrong, g->agjk_off,
+            g->coal_off, g->agjk_nc, g->coal_nc);
+    if (with_misses) fprintf(md, " %d |", g->agjk_violations);
+    fprintf(md, "\n");
+    if (!csv) return;
+    fprintf(csv, "%s,%s,%s,%s,%d,%.1f,%.1f,%.4f,%.4f,%d,%.3f,%.3f,%.3f,%.3f,%d,%d,%d,%d,%d,%d",
+            set, bench_category_name(category), mode ? "boolean" : "distance", method, g->n,
+            g->agjk_ns, g->coal_ns, g->ratio_median, g->ratio_of_means, g->slower, g->agjk_it,
+            g->coal_it, g->agjk_calls, g->coal_calls, g->agjk_wrong, g->coal_wrong, g->agjk_off,
+            g->coal_off, g->agjk_nc, g->coal_nc);
+    if (with_misses) fprintf(csv, ",%d", g->agjk_violations);
+    fprintf(csv, "\n");
+}
+
+void coal_bench_count_answers(const coal_bench_data *d, coal_bench_answers *a) {
+    int i;
+    for (i = 0; i < d->count; ++i) {
+        const coal_bench_record *x = &d->recs[i];
+        a->agjk_wrong += x->agjk.wrong;
+        a->coal_wrong += x->coal.wrong;
+        a->agjk_off += x->agjk_off;
+        a->coal_off += x->coal_off;
+        a->agjk_nc += !x->agjk.converged;
+        a->coal_nc += !x->coal.converged;
+        a->agjk_violations += x->agjk.violation;
+        a->agjk_contact += x->agjk.run.status == AGJK_STATUS_CONTACT_WITHIN_TOLERANCE;
+    }
+    a->runs += d->count;
+}
+
 void coal_bench_tally_init(coal_bench_tally *t) { memset(t, 0, sizeof *t); }
 
 void coal_bench_tally_add(coal_bench_tally *t, const coal_bench_group *g, const char *set,
@@ -381,22 +418,17 @@ int coal_bench_write(const bench_report *r, const coal_bench_data *d) {
                r->cfg->out_dir);
         ratio_table(outs, 2, r, d, b0, b1, b2);
         {
-            int i, k, aw = 0, cw = 0, ao = 0, co = 0, an = 0, cn = 0;
-            for (i = 0; i < d->count; ++i) {
-                const coal_bench_record *x = &d->recs[i];
-                aw += x->agjk.wrong;
-                cw += x->coal.wrong;
-                ao += x->agjk_off;
-                co += x->coal_off;
-                an += !x->agjk.converged;
-                cn += !x->coal.converged;
-            }
+            int k;
+            coal_bench_answers a;
+            memset(&a, 0, sizeof a);
+            coal_bench_count_answers(d, &a);
             for (k = 0; k < 2; ++k)
                 fprintf(outs[k], "Answers of these %d runs against the certified reference: "
                                  "wrong verdicts agjk %d, Coal %d; distances off by more than "
                                  "sqrt(tolerance) agjk %d, Coal %d; no verdict agjk %d, Coal %d "
                                  "(details below).\n\n",
-                        d->count, aw, cw, ao, co, an, cn);
+                        a.runs, a.agjk_wrong, a.coal_wrong, a.agjk_off, a.coal_off, a.agjk_nc,
+                        a.coal_nc);
         }
     }
     fprintf(md, "### Details: median ns, iterations and support calls (mean), answers\n\n"
@@ -421,24 +453,7 @@ int coal_bench_write(const bench_report *r, const coal_bench_data *d) {
                                                              coal_bench_methods[m], mode, b0, b1,
                                                              b2);
                     if (!g.n) continue;
-                    fprintf(md, "| %s | %s | %s | %s | %d | %.0f | %.0f | %.2f | %.2f | %d | "
-                                "%.1f / %.1f | %.1f / %.1f | %d / %d | %d / %d | %d / %d |\n",
-                            bench_family_name(fam), bench_category_name(c),
-                            mode ? "Boolean" : "distance", bench_method_name(coal_bench_methods[m]),
-                            g.n, g.agjk_ns, g.coal_ns, g.ratio_median, g.ratio_of_means,
-                            g.slower, g.agjk_it, g.coal_it, g.agjk_calls, g.coal_calls,
-                            g.agjk_wrong, g.coal_wrong, g.agjk_off, g.coal_off, g.agjk_nc,
-                            g.coal_nc);
-                    if (csv)
-                        fprintf(csv, "%s,%s,%s,%s,%d,%.1f,%.1f,%.4f,%.4f,%d,%.3f,%.3f,%.3f,%.3f,"
-                                     "%d,%d,%d,%d,%d,%d\n",
-                                bench_family_name(fam), bench_category_name(c),
-                                mode ? "boolean" : "distance",
-                                bench_method_name(coal_bench_methods[m]),
-                                g.n, g.agjk_ns, g.coal_ns, g.ratio_median, g.ratio_of_means,
-                                g.slower, g.agjk_it, g.coal_it, g.agjk_calls, g.coal_calls,
-                                g.agjk_wrong, g.coal_wrong, g.agjk_off, g.coal_off, g.agjk_nc,
-                                g.coal_nc);
+                    coal_bench_detail_row(md, csv, bench_family_name(fam), c, mode, m, &g, 0);
                 }
     fprintf(md, "\nIterations: agjk counts the support call that detects convergence; Coal's "
                 "GJK::getNumIterations() does not. Support calls of Coal are counted in one "

@@ -66,6 +66,23 @@ int coal_bench_different_work(const coal_bench_group *g);
 /* A ratio table cell: bold when agjk is slower, a dagger when differ. */
 void coal_bench_cell(FILE *f, double v, int differ);
 
+/* Answers of a run against the certified reference, added up over records. */
+typedef struct coal_bench_answers {
+    int runs;
+    int agjk_wrong, coal_wrong;   /* verdicts the reference refutes */
+    int agjk_off, coal_off;       /* converged distances off by more than sqrt(tolerance) */
+    int agjk_nc, coal_nc;         /* no verdict */
+    int agjk_violations;          /* agjk's certified interval misses the reference */
+    int agjk_contact;             /* agjk's contact within tolerance */
+} coal_bench_answers;
+/* Adds d's records to *a (which the caller zeroes first). */
+void coal_bench_count_answers(const coal_bench_data *d, coal_bench_answers *a);
+
+/* One row of a details table (markdown) and of its CSV (csv may be NULL):
+ * with_misses adds agjk's bound misses as a last column. */
+void coal_bench_detail_row(FILE *md, FILE *csv, const char *set, int category, int mode, int m,
+                           const coal_bench_group *g, int with_misses);
+
 /* A ratio table's header: `first` (the set's column title), the 8 method x
  * mode columns, then the `extra` column titles (may be NULL). */
 void coal_bench_ratio_head(FILE *f, const char *first, const char *const *extra, int n_extra);

@@ -228,8 +228,9 @@ int bench_stress_write(const bench_config *cfg, const bench_stress *s) {
     char path[1024];
     FILE *md, *csv, *outs[2];
     double *b0, *b1, *b2;
-    int k, c, m, mode, max_count = 0, problems = 0, runs = 0;
-    int aw = 0, cw = 0, ao = 0, co = 0, an = 0, cn = 0, av = 0, ac = 0, trouble;
+    int k, c, m, mode, max_count = 0, problems = 0;
+    int trouble;
+    coal_bench_answers a;
     snprintf(path, sizeof path, "%s/tables.md", cfg->out_dir);
     md = fopen(path, "a");
     if (!md) { perror(path); return -1; }
@@ -247,7 +248,6 @@ int bench_stress_write(const bench_config *cfg, const bench_stress *s) {
         if (!s->data[k]) continue;
         if (s->data[k]->count > max_count) max_count = s->data[k]->count;
         problems += s->sets[k].problem_count;
-        runs += s->data[k]->count;
     }
     b0 = malloc(sizeof(double) * ((size_t)max_count + 8));
     b1 = malloc(sizeof(double) * ((size_t)max_count + 8));
@@ -273,22 +273,9 @@ int bench_stress_write(const bench_config *cfg, const bench_stress *s) {
     printf("\nagjk / Coal %s on the stress set (results in %s/tables.md):\n\n",
            coal_adapter_version(), cfg->out_dir);
     ratio_table(outs, 2, s, b0, b1, b2);
-    for (k = 0; k < STRESS_COUNT; ++k) {
-        int i;
-        const coal_bench_data *d = s->data[k];
-        if (!d) continue;
-        for (i = 0; i < d->count; ++i) {
-            const coal_bench_record *x = &d->recs[i];
-            aw += x->agjk.wrong;
-            cw += x->coal.wrong;
-            ao += x->agjk_off;
-            co += x->coal_off;
-            an += !x->agjk.converged;
-            cn += !x->coal.converged;
-            av += x->agjk.violation;
-            ac += x->agjk.run.status == AGJK_STATUS_CONTACT_WITHIN_TOLERANCE;
-        }
-    }
+    memset(&a, 0, sizeof a);
+    for (k = 0; k < STRESS_COUNT; ++k)
+        if (s->data[k]) coal_bench_count_answers(s->data[k], &a);
     for (k = 0; k < 2; ++k)
         fprintf(outs[k], "Answers of these %d runs against the certified reference: wrong "
                          "verdicts agjk %d, Coal %d; distances off by more than sqrt(tolerance) "
@@ -296,8 +283,9 @@ int bench_stress_write(const bench_config *cfg, const bench_stress *s) {
                          "interval missing the reference %d; agjk's contact within tolerance "
                          "(|x| within the tolerance of 0: no side certified, not counted as "
                          "wrong or as no verdict) %d.\n\n",
-                runs, aw, cw, ao, co, an, cn, av, ac);
-    trouble = aw + av + an;
+                a.runs, a.agjk_wrong, a.coal_wrong, a.agjk_off, a.coal_off, a.agjk_nc, a.coal_nc,
+                a.agjk_violations, a.agjk_contact);
+    trouble = a.agjk_wrong + a.agjk_violations + a.agjk_nc;
     if (trouble) {
         fprintf(md, "agjk runs to look at (wrong verdict, certified interval missing the "
                     "reference, or no verdict):\n\n");
@@ -343,23 +331,7 @@ int bench_stress_write(const bench_config *cfg, const bench_stress *s) {
                                                              coal_bench_methods[m], mode, b0, b1,
                                                              b2);
                     if (!g.n) continue;
-                    fprintf(md, "| %s | %s | %s | %s | %d | %.0f | %.0f | %.2f | %.2f | %d | "
-                                "%.1f / %.1f | %.1f / %.1f | %d / %d | %d / %d | %d / %d | %d |\n",
-                            families[k].name, bench_category_name(c),
-                            mode ? "Boolean" : "distance",
-                            bench_method_name(coal_bench_methods[m]), g.n, g.agjk_ns, g.coal_ns,
-                            g.ratio_median, g.ratio_of_means, g.slower, g.agjk_it, g.coal_it,
-                            g.agjk_calls, g.coal_calls, g.agjk_wrong, g.coal_wrong, g.agjk_off,
-                            g.coal_off, g.agjk_nc, g.coal_nc, g.agjk_violations);
-                    if (csv)
-                        fprintf(csv, "%s,%s,%s,%s,%d,%.1f,%.1f,%.4f,%.4f,%d,%.3f,%.3f,%.3f,%.3f,"
-                                     "%d,%d,%d,%d,%d,%d,%d\n",
-                                families[k].name, bench_category_name(c),
-                                mode ? "boolean" : "distance",
-                                bench_method_name(coal_bench_methods[m]), g.n, g.agjk_ns,
-                                g.coal_ns, g.ratio_median, g.ratio_of_means, g.slower, g.agjk_it,
-                                g.coal_it, g.agjk_calls, g.coal_calls, g.agjk_wrong, g.coal_wrong,
-                                g.agjk_off, g.coal_off, g.agjk_nc, g.coal_nc, g.agjk_violations);
+                    coal_bench_detail_row(md, csv, families[k].name, c, mode, m, &g, 1);
                 }
     }
     fprintf(md, "\nColumns as in the details above; \"agjk bound misses\": agjk's certified "
