@@ -252,23 +252,45 @@ void coal_bench_ratio_head(FILE *f, const char *first, const char *const *extra,
 
 void coal_bench_detail_row(FILE *md, FILE *csv, const char *set, int category, int mode, int m,
                            const coal_bench_group *g, int with_misses) {
-    const char *method = bench_method_name(coal_bench_methods[m]);
-    fprintf(md, "| %s | %s | %s | %s | %d | %.0f | %.0f | %.2f | %.2f | %d | %.1f / %.1f | "
-                "%.1f / %.1f | %d / %d | %d / %d | %d / %d |",
-            set, bench_category_name(category), mode ? "Boolean" : "distance", method, g->n,
-            g->agjk_ns, g->coal_ns, g->ratio_median, g->ratio_of_means, g->slower, g->agjk_it,
-            g->coal_it, g->agjk_calls, g->coal_calls, g->agjk_wrong, g->coal_wrong, g->agjk_off,
-            g->coal_off, g->agjk_nc, g->coal_nc);
-    if (with_misses) fprintf(md, " %d |", g->agjk_violations);
-    fprintf(md, "\n");
-    if (!csv) return;
-    fprintf(csv, "%s,%s,%s,%s,%d,%.1f,%.1f,%.4f,%.4f,%d,%.3f,%.3f,%.3f,%.3f,%d,%d,%d,%d,%d,%d",
-            set, bench_category_name(category), mode ? "boolean" : "distance", method, g->n,
-            g->agjk_ns, g->coal_ns, g->ratio_median, g->ratio_of_means, g->slower, g->agjk_it,
-            g->coal_it, g->agjk_calls, g->coal_calls, g->agjk_wrong, g->coal_wrong, g->agjk_off,
-            g->coal_off, g->agjk_nc, g->coal_nc);
-    if (with_misses) fprintf(csv, ",%d", g->agjk_violations);
-    fprintf(csv, "\n");
+    int k;
+    for (k = 0; k < 2; ++k) {
+        FILE *f = k ? csv : md;
+        if (!f) continue;
+        fprintf(f,
+                k ? "%s,%s,%s,%s,%d,%.1f,%.1f,%.4f,%.4f,%d,%.3f,%.3f,%.3f,%.3f,%d,%d,%d,%d,%d,%d"
+                  : "| %s | %s | %s | %s | %d | %.0f | %.0f | %.2f | %.2f | %d | %.1f / %.1f | "
+                    "%.1f / %.1f | %d / %d | %d / %d | %d / %d |",
+                set, bench_category_name(category),
+                mode ? (k ? "boolean" : "Boolean") : "distance",
+                bench_method_name(coal_bench_methods[m]), g->n, g->agjk_ns, g->coal_ns,
+                g->ratio_median, g->ratio_of_means, g->slower, g->agjk_it, g->coal_it,
+                g->agjk_calls, g->coal_calls, g->agjk_wrong, g->coal_wrong, g->agjk_off,
+                g->coal_off, g->agjk_nc, g->coal_nc);
+        if (with_misses) fprintf(f, k ? ",%d" : " %d |", g->agjk_violations);
+        fprintf(f, "\n");
+    }
+}
+
+FILE *coal_bench_details_open(FILE *md, const char *path, const char *set_title,
+                              const char *set_column, int with_misses) {
+    FILE *csv;
+    fprintf(md, "| %s | category | mode | method | problems | agjk ns | Coal ns | ratio (median) "
+                "| ratio of means | agjk slower on | iterations agjk / Coal | support calls "
+                "agjk / Coal | wrong verdicts agjk / Coal | distance off by > sqrt(tol) agjk / "
+                "Coal | no verdict agjk / Coal |%s\n"
+                "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|%s\n",
+            set_title, with_misses ? " agjk bound misses |" : "", with_misses ? "---|" : "");
+    csv = fopen(path, "w");
+    if (!csv) {
+        perror(path);
+        return NULL;
+    }
+    fprintf(csv, "%s,category,mode,method,problems,agjk_ns_median,coal_ns_median,ratio_median,"
+                 "ratio_of_means,agjk_slower,agjk_iterations,coal_iterations,agjk_support_calls,"
+                 "coal_support_calls,agjk_wrong,coal_wrong,agjk_off,coal_off,agjk_no_verdict,"
+                 "coal_no_verdict%s\n",
+            set_column, with_misses ? ",agjk_bound_misses" : "");
+    return csv;
 }
 
 void coal_bench_count_answers(const coal_bench_data *d, coal_bench_answers *a) {
@@ -431,20 +453,9 @@ int coal_bench_write(const bench_report *r, const coal_bench_data *d) {
                         a.coal_nc);
         }
     }
-    fprintf(md, "### Details: median ns, iterations and support calls (mean), answers\n\n"
-                "| set | category | mode | method | problems | agjk ns | Coal ns | ratio (median) "
-                "| ratio of means | agjk slower on | iterations agjk / Coal | support calls "
-                "agjk / Coal | wrong verdicts agjk / Coal | distance off by > sqrt(tol) agjk / "
-                "Coal | no verdict agjk / Coal |\n"
-                "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+    fprintf(md, "### Details: median ns, iterations and support calls (mean), answers\n\n");
     snprintf(path, sizeof path, "%s/coal.csv", r->cfg->out_dir);
-    csv = fopen(path, "w");
-    if (!csv) perror(path);
-    else
-        fprintf(csv, "family,category,mode,method,problems,agjk_ns_median,coal_ns_median,"
-                     "ratio_median,ratio_of_means,agjk_slower,agjk_iterations,coal_iterations,"
-                     "agjk_support_calls,coal_support_calls,agjk_wrong,coal_wrong,agjk_off,"
-                     "coal_off,agjk_no_verdict,coal_no_verdict\n");
+    csv = coal_bench_details_open(md, path, "set", "family", 0);
     for (fam = 0; fam < BENCH_FAMILY_COUNT; ++fam)
         for (c = 0; c < BENCH_CATEGORY_COUNT; ++c)
             for (mode = 0; mode < 2; ++mode)

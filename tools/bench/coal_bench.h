@@ -78,8 +78,13 @@ typedef struct coal_bench_answers {
 /* Adds d's records to *a (which the caller zeroes first). */
 void coal_bench_count_answers(const coal_bench_data *d, coal_bench_answers *a);
 
-/* One row of a details table (markdown) and of its CSV (csv may be NULL):
- * with_misses adds agjk's bound misses as a last column. */
+/* A details table: its markdown header (first column `set_title`) on md, and
+ * its CSV at path with its header line (first column `set_column`), which it
+ * returns (NULL, said on stderr, when it cannot be written); with_misses
+ * adds agjk's bound misses as a last column to both. */
+FILE *coal_bench_details_open(FILE *md, const char *path, const char *set_title,
+                              const char *set_column, int with_misses);
+/* One row of a details table (markdown) and of its CSV (csv may be NULL). */
 void coal_bench_detail_row(FILE *md, FILE *csv, const char *set, int category, int mode, int m,
                            const coal_bench_group *g, int with_misses);
 

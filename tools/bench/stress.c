@@ -307,20 +307,9 @@ int bench_stress_write(const bench_config *cfg, const bench_stress *s) {
                 set->skipped_pairs, bad, set->ref_stalled, set->max_target_deviation,
                 s->full[k] ? " (generator out of room)" : "");
     }
-    fprintf(md, ".\n\n### Stress set details: median ns, support calls (mean), answers\n\n"
-                "| stress set | category | mode | method | problems | agjk ns | Coal ns | ratio "
-                "(median) | ratio of means | agjk slower on | iterations agjk / Coal | support "
-                "calls agjk / Coal | wrong verdicts agjk / Coal | distance off by > sqrt(tol) "
-                "agjk / Coal | no verdict agjk / Coal | agjk bound misses |\n"
-                "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+    fprintf(md, ".\n\n### Stress set details: median ns, support calls (mean), answers\n\n");
     snprintf(path, sizeof path, "%s/stress.csv", cfg->out_dir);
-    csv = fopen(path, "w");
-    if (!csv) perror(path);
-    else
-        fprintf(csv, "set,category,mode,method,problems,agjk_ns_median,coal_ns_median,"
-                     "ratio_median,ratio_of_means,agjk_slower,agjk_iterations,coal_iterations,"
-                     "agjk_support_calls,coal_support_calls,agjk_wrong,coal_wrong,agjk_off,"
-                     "coal_off,agjk_no_verdict,coal_no_verdict,agjk_bound_misses\n");
+    csv = coal_bench_details_open(md, path, "stress set", "set", 1);
     for (k = 0; k < STRESS_COUNT; ++k) {
         if (!s->data[k]) continue;
         for (c = 0; c < BENCH_CATEGORY_COUNT; ++c)
