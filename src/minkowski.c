@@ -32,6 +32,7 @@ static void set_limits(agjk__minkowski *md) {
     /* A tiny problem (scale > 1) needs unit-size directions: a small direction
      * times its tiny coordinates would underflow and lose the sign. */
     md->direction_min = md->scale > 1.0 ? 1.0 : AGJK__DIRECTION_MIN;
+    md->direction_floor2 = 4.0 * md->direction_min * md->direction_min;
 }
 
 void agjk__minkowski_init(agjk__minkowski *md, const agjk_shape *a, const agjk_pose *pose_a,
@@ -78,6 +79,7 @@ void agjk__minkowski_init(agjk__minkowski *md, const agjk_shape *a, const agjk_p
                                                                      : AGJK_MAX_COORDINATE;
     md->raw_limit = md->point_limit;
     md->direction_min = 1.0;
+    md->direction_floor2 = 4.0;
 }
 
 /* Multiplies everything md holds in solver units by f (a power of two). */

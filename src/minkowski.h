@@ -45,6 +45,10 @@ typedef struct agjk__minkowski {
     double raw_limit;
     double point_limit;
     double direction_min;
+    /* 4 direction_min^2: a direction whose computed squared norm lies in
+     * [direction_floor2, AGJK__DIRECTION_NORM2_MAX] has max |d_i| in
+     * [direction_min, AGJK__DIRECTION_MAX] (see agjk__minkowski_support). */
+    double direction_floor2;
     /* Product of the factors agjk__minkowski_shrink applied since the solver
      * last looked; the solver multiplies its own state by it and resets it. */
     double rescaled;
@@ -65,6 +69,9 @@ void agjk__minkowski_init(agjk__minkowski *md, const agjk_shape *a, const agjk_p
  * coordinates then neither underflow nor overflow. */
 #define AGJK__DIRECTION_MIN 0x1p-60
 #define AGJK__DIRECTION_MAX 0x1p100
+/* (AGJK__DIRECTION_MAX / 2)^2: a squared norm up to this keeps every |d_i|
+ * below AGJK__DIRECTION_MAX, rounding included. */
+#define AGJK__DIRECTION_NORM2_MAX 0x1p198
 
 /* Chooses the power of two that brings the problem (support points seen so far,
  * B's offset, margins) to unit size and converts md to it. Scaling by a power
@@ -94,6 +101,7 @@ static inline double agjk__minkowski_set_scale(agjk__minkowski *md) {
      * (which set raw_limit already): either way directions may now be as
      * small as AGJK__DIRECTION_MIN. */
     md->direction_min = AGJK__DIRECTION_MIN;
+    md->direction_floor2 = 4.0 * AGJK__DIRECTION_MIN * AGJK__DIRECTION_MIN;
     /* Problems of ordinary size stay in the caller's units (no cost, and power-
      * of-two scalings commute with rounding anyway); only extreme ones move. */
     if (!(size > 0.0) || (size >= 0x1p-100 && size <= 0x1p100)) return 1.0;
@@ -173,12 +181,22 @@ static AGJK__ALWAYS_INLINE void agjk__shape_support(agjk_support_fn fn, const vo
 }
 
 /* s = argmin_{s in D} <d, s> = S_A(-d) - S_B(d) (paper eq. 7-8), d in A's frame,
- * non-zero and finite, with the points of A and B it came from. */
+ * non-zero and finite, with the points of A and B it came from. d2 is
+ * v3_norm2(d) when the caller has it at hand (the solver's iterate), else 0. */
 static AGJK__ALWAYS_INLINE void agjk__minkowski_support(agjk__minkowski *md, agjk_vec3 d,
-                                                         agjk__vertex *out, int direct) {
-    double dm = v3_maxabs(d);
-    if (!(dm >= md->direction_min && dm <= AGJK__DIRECTION_MAX))
-        d = agjk__minkowski_rescue_direction(md, d);
+                                                         double d2, agjk__vertex *out,
+                                                         int direct) {
+    /* The direction's range, from d2 when it settles it: the computed
+     * squared norm is within 3 eps of |d|^2 (far from underflow), so
+     * d2 >= 4 dmin^2 gives max |d_i| >= |d| / sqrt(3) > dmin, and
+     * d2 <= 2^198 gives max |d_i| <= |d| < 2^100. Otherwise (d2 = 0 when
+     * unknown, or outside) the test on max |d_i| itself decides, as it
+     * always did: the rescue runs exactly when it did. */
+    if (!(d2 >= md->direction_floor2 && d2 <= AGJK__DIRECTION_NORM2_MAX)) {
+        double dm = v3_maxabs(d);
+        if (!(dm >= md->direction_min && dm <= AGJK__DIRECTION_MAX))
+            d = agjk__minkowski_rescue_direction(md, d);
+    }
     agjk_vec3 na = v3_neg(d);
     agjk_vec3 db = m3_tmul(&md->rotation[0][0], d);
     agjk_vec3 pa, pb;
@@ -189,14 +207,12 @@ static AGJK__ALWAYS_INLINE void agjk__minkowski_support(agjk__minkowski *md, agj
      * every coordinate. */
     double l1 = v3_norm1(pa) + v3_norm1(pb);
     if (l1 <= md->raw_limit) {
-        /* The magnitude is the largest sum of max norms. Each computed
-         * 1-norm is at least the max norm (rounded sums of non-negative terms
-         * are monotone), so l1 >= that sum, bit for bit: only a 1-norm above
-         * the magnitude can raise it, and the max norms are taken then only. */
-        if (l1 > md->magnitude) {
-            double raw = v3_maxabs(pa) + v3_maxabs(pb);
-            if (raw > md->magnitude) agjk__minkowski_grow(md, raw);
-        }
+        /* The magnitude: the largest sum of max norms. (Taking the max norms
+         * only when l1 exceeds the magnitude, which bounds them, filtered
+         * almost nothing: the 1-norm of a support point is well above its
+         * max norm, and the test cost more than it saved.) */
+        double raw = v3_maxabs(pa) + v3_maxabs(pb);
+        if (raw > md->magnitude) agjk__minkowski_grow(md, raw);
     } else {
         agjk__minkowski_points_slow(md, &pa, &pb);
     }

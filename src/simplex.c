@@ -591,8 +591,10 @@ static unsigned gjk_tetrahedron(const agjk_vec3 *w, int exhaustive, double lambd
         mask = tetra_face(w, e, gd, gx, r, back == 2 ? 1 : 2, &taken, lambda, point);
     if (!mask && !taken) {
         mask = tetra_edge(w, 0, 1, 2, gd[0], gx[2], gx[1], r[0], r[1], r[2], lambda, point);
-        if (!mask) mask = tetra_edge(w, 1, 2, 0, gd[1], gx[0], gx[2], r[1], r[2], r[0], lambda, point);
-        if (!mask) mask = tetra_edge(w, 2, 0, 1, gd[2], gx[1], gx[0], r[2], r[0], r[1], lambda, point);
+        if (!mask)
+            mask = tetra_edge(w, 1, 2, 0, gd[1], gx[0], gx[2], r[1], r[2], r[0], lambda, point);
+        if (!mask)
+            mask = tetra_edge(w, 2, 0, 1, gd[2], gx[1], gx[0], r[2], r[0], r[1], lambda, point);
         /* GJK's last step on overlapping shapes: the origin enclosed. */
         if (!mask) mask = tetra_inside(w, lambda, point);
     }

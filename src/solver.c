@@ -72,15 +72,17 @@ static AGJK__NOINLINE AGJK__COLD void follow_rescale(solver *sv, agjk_vec3 *d) {
     if (!sv->in->relative) sv->abs_tolerance *= f * f;
 }
 
-/* One Minkowski support in direction d (s in the current units): inline for
- * the loop's own call, out of line for the rare ones (momentum switch-off,
- * final certification), so that the support path is expanded once. */
-static AGJK__ALWAYS_INLINE void support(solver *sv, agjk_vec3 *d, agjk__vertex *s, int direct) {
-    agjk__minkowski_support(sv->md, *d, s, direct);
+/* One Minkowski support in direction d (s in the current units), d2 = |d|^2
+ * if known, else 0 (see agjk__minkowski_support): inline for the loop's own
+ * call, out of line for the rare ones (momentum switch-off, final
+ * certification), so that the support path is expanded once. */
+static AGJK__ALWAYS_INLINE void support(solver *sv, agjk_vec3 *d, double d2, agjk__vertex *s,
+                                        int direct) {
+    agjk__minkowski_support(sv->md, *d, d2, s, direct);
     if (sv->md->rescaled != 1.0) follow_rescale(sv, d);
 }
 static AGJK__NOINLINE void support_rare(solver *sv, agjk_vec3 *d, agjk__vertex *s) {
-    support(sv, d, s, 0);
+    support(sv, d, 0.0, s, 0);
 }
 
 /* Alg. 2: the plane of normal d through s separates D (inflated by the margins)
@@ -674,7 +676,7 @@ static void first_support(solver *sv, agjk__vertex *s, agjk__solve_output *out) 
     agjk_vec3 x = sv->in->x0;
     /* The problem's size is not known yet: give the callbacks a unit-size
      * direction (exact power-of-two scaling of x_0). */
-    agjk__minkowski_support(md, v3_scale_to_unit(x, v3_maxabs(x)), s, 1);
+    agjk__minkowski_support(md, v3_scale_to_unit(x, v3_maxabs(x)), 0.0, s, 1);
     ++out->support_calls;
     /* A shrink during that first call already put s in new units; x_0, given
      * in the caller's units, needs it too. */
@@ -816,8 +818,13 @@ void agjk__solve(agjk__minkowski *md, const agjk__solve_input *in, agjk__solve_o
         out->iterations = k + 1;
         agjk_vec3 d = k == 0 ? d0 : sv.x;
         if (k > 0) {
-            if (sv.m.active) d = agjk__momentum_direction(&sv.m, k, sv.x);
-            support(&sv, &d, &s, 1);
+            /* A plain step's direction is x itself, whose |x|^2 is known. */
+            double d2 = sv.x2;
+            if (sv.m.active) {
+                d = agjk__momentum_direction(&sv.m, k, sv.x);
+                d2 = 0.0;
+            }
+            support(&sv, &d, d2, &s, 1);
             ++out->support_calls;
             if (support_ends_query(&sv, d, &s, out)) break;
             /* Adaptive method: a first momentum support that found s_0 again

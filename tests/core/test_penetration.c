@@ -596,7 +596,8 @@ START_TEST(four_point_starts) {
         agjk__vertex corner[8];
         for (int i = 0; i < 8; ++i)
             agjk__minkowski_support(&md, v3(i & 1 ? 1.0 : -1.0, i & 2 ? 1.0 : -1.0,
-                                            i & 4 ? 1.0 : -1.0), &corner[i], 0);
+                                            i & 4 ? 1.0 : -1.0),
+                                    0.0, &corner[i], 0);
         agjk__vertex sx[4];
         if (kind == 0) { /* the face of D at the largest x: coplanar */
             sx[0] = corner[0];
