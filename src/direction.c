@@ -222,36 +222,20 @@ int agjk__momentum_update(agjk__momentum *m, int k, agjk_vec3 d, const agjk__ver
     return stopped;
 }
 
-agjk_vec3 agjk__momentum_direction(const agjk__momentum *m, int k, agjk_vec3 x) {
+agjk_vec3 agjk__momentum_direction_other(const agjk__momentum *m, int k, agjk_vec3 x) {
     double kk = (double)k;
     agjk_vec3 d;
     switch (m->method) {
-    case AGJK_METHOD_NESTEROV: {
-        /* Alg. 6 lines 1-3: delta_k = (k+1)/(k+3),
-         * y_k = delta_k x_k + (1 - delta_k) s_{k-1},
-         * d_k = delta_k d_{k-1} + (1 - delta_k) grad f(y_k). */
-        double delta = (kk + 1.0) / (kk + 3.0);
-        agjk_vec3 y = v3_lerp2(x, delta, m->s_prev, 1.0 - delta);
-        d = v3_lerp2(m->d_prev, delta, y, 1.0 - delta);
-        break;
-    }
     case AGJK_METHOD_NESTEROV_NORMALIZED: {
-        /* Alg. 7 (eq. 31): the same with both terms normalised, so that the
-         * momentum does not swamp the gradient as ||d|| grows relative to ||y||
-         * (which stalls momentum early on polytopes). */
+        /* Alg. 7 (eq. 31): Nesterov's mix with both terms normalised, so that
+         * the momentum does not swamp the gradient as ||d|| grows relative to
+         * ||y|| (which stalls momentum early on polytopes). */
         double delta = (kk + 1.0) / (kk + 3.0);
         agjk_vec3 y = v3_lerp2(x, delta, m->s_prev, 1.0 - delta);
         agjk_vec3 yn = v3_normalize(y);
         agjk_vec3 dn = v3_normalize(m->d_prev);
         if (v3_norm2(yn) == 0.0) yn = v3_normalize(x);
         d = v3_lerp2(dn, delta, yn, 1.0 - delta);
-        break;
-    }
-    case AGJK_METHOD_POLYAK: {
-        /* GJK++ (Montaut et al.): heavy-ball momentum on the direction,
-         * d_k = delta_k d_{k-1} + (1 - delta_k) x_k with delta_k = 1/(k+1). */
-        double delta = 1.0 / (kk + 1.0);
-        d = v3_lerp2(m->d_prev, delta, x, 1.0 - delta);
         break;
     }
     case AGJK_METHOD_ADAPTIVE: {
@@ -264,27 +248,17 @@ agjk_vec3 agjk__momentum_direction(const agjk__momentum *m, int k, agjk_vec3 x) 
                        xn * xn >= ADAPTIVE_FAR_SIZE * ADAPTIVE_FAR_SIZE * m->x0_norm2);
             plain = far || (k == 1 && m->plane <= -ADAPTIVE_OPPOSITE_RATIO * xn);
         }
-        if (plain) {
+        if (plain)
             d = x;
-        } else if (m->phase == AGJK__PHASE_POLYAK) {
-            /* As AGJK_METHOD_POLYAK, with a lighter first momentum step. */
-            double delta = k == 1 ? ADAPTIVE_POLYAK_FIRST : 1.0 / (kk + 1.0);
-            d = v3_lerp2(m->d_prev, delta, x, 1.0 - delta);
-        } else {
-            double delta = (kk + 1.0) / (kk + 3.0); /* as AGJK_METHOD_NESTEROV */
-            agjk_vec3 y = v3_lerp2(x, delta, m->s_prev, 1.0 - delta);
-            d = v3_lerp2(m->d_prev, delta, y, 1.0 - delta);
-        }
+        else if (m->phase == AGJK__PHASE_POLYAK) /* with a lighter first momentum step */
+            d = agjk__polyak_mix(m, k == 1 ? ADAPTIVE_POLYAK_FIRST : 1.0 / (kk + 1.0), x);
+        else
+            d = agjk__nesterov_mix(m, k, x);
         break;
     }
     default:
         d = x;
         break;
     }
-    /* A zero or non-finite combination carries no direction: use the
-     * gradient. (One test: the 1-norm is NaN or Inf with any such coordinate,
-     * and 0 only for the zero vector.) */
-    double n1 = v3_norm1(d);
-    if (!(n1 > 0.0 && n1 <= DBL_MAX)) d = x;
-    return d;
+    return agjk__direction_or_gradient(d, x);
 }

@@ -34,8 +34,42 @@ enum { AGJK__PHASE_FIXED = 0, AGJK__PHASE_POLYAK, AGJK__PHASE_NESTEROV, AGJK__PH
  * a cache's guess of x* (the adaptive method then trusts it from the start). */
 void agjk__momentum_init(agjk__momentum *m, agjk_method method, agjk_vec3 x0, int given);
 
-/* Support direction d_k for iterate x_k at iteration k while momentum is active. */
-agjk_vec3 agjk__momentum_direction(const agjk__momentum *m, int k, agjk_vec3 x);
+/* Alg. 6 lines 1-3: delta_k = (k+1)/(k+3),
+ * y_k = delta_k x_k + (1 - delta_k) s_{k-1},
+ * d_k = delta_k d_{k-1} + (1 - delta_k) grad f(y_k). */
+static inline agjk_vec3 agjk__nesterov_mix(const agjk__momentum *m, int k, agjk_vec3 x) {
+    double delta = ((double)k + 1.0) / ((double)k + 3.0);
+    agjk_vec3 y = v3_lerp2(x, delta, m->s_prev, 1.0 - delta);
+    return v3_lerp2(m->d_prev, delta, y, 1.0 - delta);
+}
+
+/* GJK++ (Montaut et al.): heavy-ball momentum on the direction,
+ * d_k = delta d_{k-1} + (1 - delta) x_k (delta_k = 1/(k+1) for Polyak). */
+static inline agjk_vec3 agjk__polyak_mix(const agjk__momentum *m, double delta, agjk_vec3 x) {
+    return v3_lerp2(m->d_prev, delta, x, 1.0 - delta);
+}
+
+/* A zero or non-finite combination carries no direction: the gradient x
+ * instead. (One test: the 1-norm is NaN or Inf with any such coordinate, and
+ * 0 only for the zero vector.) */
+static inline agjk_vec3 agjk__direction_or_gradient(agjk_vec3 d, agjk_vec3 x) {
+    double n1 = v3_norm1(d);
+    return n1 > 0.0 && n1 <= DBL_MAX ? d : x;
+}
+
+/* Normalised Nesterov and the adaptive rule (direction.c). */
+agjk_vec3 agjk__momentum_direction_other(const agjk__momentum *m, int k, agjk_vec3 x);
+
+/* Support direction d_k for iterate x_k at iteration k while momentum is
+ * active. Nesterov's and Polyak's mixes inline: a few operations, where the
+ * call took 3% of a Nesterov query on overlapping ellipsoids. */
+static inline agjk_vec3 agjk__momentum_direction(const agjk__momentum *m, int k, agjk_vec3 x) {
+    if (m->method == AGJK_METHOD_NESTEROV)
+        return agjk__direction_or_gradient(agjk__nesterov_mix(m, k, x), x);
+    if (m->method == AGJK_METHOD_POLYAK)
+        return agjk__direction_or_gradient(agjk__polyak_mix(m, 1.0 / ((double)k + 1.0), x), x);
+    return agjk__momentum_direction_other(m, k, x);
+}
 
 /* Adaptive method, iteration 1 of the Polyak phase: the direction in which
  * to retry a support that returned s_0 again (direction.c). */
