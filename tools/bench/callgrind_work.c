@@ -66,11 +66,13 @@ int measured_coal(void *query) { return coal_adapter_query_run(query); }
 
 /* The method of both libraries: plain GJK, or AGJK_WORK_METHOD=nesterov or
  * polyak in the environment (a quick look at the momentum variants; the
- * callgrind table is plain GJK). */
+ * callgrind table is plain GJK), or adaptive (agjk's default; Coal then runs
+ * Nesterov). */
 static int work_method(void) {
     const char *m = getenv("AGJK_WORK_METHOD");
     if (m && strcmp(m, "nesterov") == 0) return 1;
     if (m && strcmp(m, "polyak") == 0) return 2;
+    if (m && strcmp(m, "adaptive") == 0) return 3;
     return 0;
 }
 
@@ -84,7 +86,7 @@ static void agjk_query_init(agjk_query *q, const bench_set *set, const bench_pro
     q->boolean = w->mode == BENCH_BOOLEAN;
     q->opt = agjk_default_options();
     q->opt.method = (const agjk_method[]){AGJK_METHOD_GJK, AGJK_METHOD_NESTEROV,
-                                          AGJK_METHOD_POLYAK}[work_method()];
+                                          AGJK_METHOD_POLYAK, AGJK_METHOD_ADAPTIVE}[work_method()];
     q->opt.tolerance = 1e-8;
     q->opt.max_iterations = 1000;
     q->opt.compute = AGJK_COMPUTE_DISTANCE;
@@ -94,7 +96,7 @@ static void coal_desc_init(coal_query_desc *d, const agjk_query *q) {
     memset(d, 0, sizeof *d);
     coal_bench_pose(&q->p->pose_a, d->rotation_a, d->translation_a);
     coal_bench_pose(&q->p->pose_b, d->rotation_b, d->translation_b);
-    d->method = (const int[]){COAL_GJK, COAL_NESTEROV, COAL_POLYAK}[work_method()];
+    d->method = (const int[]){COAL_GJK, COAL_NESTEROV, COAL_POLYAK, COAL_NESTEROV}[work_method()];
     d->boolean = q->boolean;
     d->tolerance = 1e-8;
     d->max_iterations = 1000;
