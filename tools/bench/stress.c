@@ -60,11 +60,19 @@ static const double touching_targets[4] = {-1e-6, -1e-9, 1e-9, 1e-6};
 static const int touching_categories[4] = {BENCH_OVERLAPPING, BENCH_OVERLAPPING, BENCH_CLOSE,
                                            BENCH_CLOSE};
 
+/* The adaptive method (agjk's default) in distance mode on one set and
+ * category, run once per problem (untimed), judged by the reference. */
+typedef struct stress_adaptive {
+    double calls;              /* support calls, summed */
+    int n, wrong, violations, no_verdict;
+} stress_adaptive;
+
 struct bench_stress {
     int pairs, poses, reps;
     double tolerance;
     bench_set sets[STRESS_COUNT];
     coal_bench_data *data[STRESS_COUNT];
+    stress_adaptive adaptive[STRESS_COUNT][BENCH_CATEGORY_COUNT];
     int full[STRESS_COUNT];    /* the generator ran out of room (a bug) */
     double seconds_generate, seconds_run;
 };
@@ -94,6 +102,33 @@ static void move_far(bench_set *set, bench_rng *rng) {
         p->pose_b.translation.z += shift.z;
         p->offset = fmax(norm3(p->pose_a.translation), norm3(p->pose_b.translation));
         bench_problem_reference(set, p);
+    }
+}
+
+/* The adaptive method on every problem of set k, with the tolerance the
+ * Coal comparison used there (tolerance x scale^2). */
+static void run_adaptive(bench_stress *s, int k, const bench_config *cfg) {
+    const bench_set *set = &s->sets[k];
+    int i;
+    for (i = 0; i < set->problem_count; ++i) {
+        const bench_problem *p = &set->problems[i];
+        stress_adaptive *a = &s->adaptive[k][p->category];
+        bench_solve_options o;
+        bench_record rec;
+        memset(&o, 0, sizeof o);
+        memset(&rec, 0, sizeof rec);
+        o.tolerance = cfg->tolerance * p->scale * p->scale;
+        o.max_iterations = cfg->max_iterations;
+        if (bench_solve(set, p, BM_ADAPTIVE, BENCH_DISTANCE, &o, &rec.run) != 0) continue;
+        rec.problem = i;
+        rec.method = BM_ADAPTIVE;
+        rec.mode = BENCH_DISTANCE;
+        bench_evaluate(p, &rec);
+        a->calls += rec.run.support_calls;
+        a->n++;
+        a->wrong += rec.wrong;
+        a->violations += rec.violation;
+        a->no_verdict += !rec.converged;
     }
 }
 
@@ -133,6 +168,7 @@ bench_stress *bench_stress_run(const bench_config *cfg) {
         t0 = bench_now_ns();
         snprintf(label, sizeof label, "stress, %s", f->name);
         s->data[k] = coal_bench_run_set(cfg, set, label);
+        run_adaptive(s, k, cfg);
         s->seconds_run += (bench_now_ns() - t0) * 1e-9;
     }
     return s;
@@ -189,6 +225,65 @@ static void ratio_table(FILE **out, int nout, const bench_stress *s, double *b0,
                         "of support calls (means more than 5%% apart).\n\n");
         coal_bench_tally_write(out[o], &t, "On the stress set, of", " on the stress set");
     }
+}
+
+/* Support calls per distance query (mean) on the stress set: the four
+ * methods the Coal comparison ran (agjk's and Coal's counts from its
+ * records) against the adaptive method, as the protocol's table (calls.c). */
+static void adaptive_table(FILE *md, const bench_stress *s) {
+    int k, c, m, i, rows = 0, worse = 0, worse_gjk = 0, worse_coal = 0;
+    int wrong = 0, misses = 0, no_verdict = 0, runs = 0;
+    fprintf(md, "### Stress set: support calls per distance query (mean), the adaptive method\n\n"
+                "| stress set | category | GJK | Nesterov | Nesterov-normalized | Polyak | best of "
+                "the four | Coal's best | Adaptive |\n|---|---|---|---|---|---|---|---|---|\n");
+    for (k = 0; k < STRESS_COUNT; ++k) {
+        const coal_bench_data *d = s->data[k];
+        if (!d) continue;
+        for (c = BENCH_CATEGORY_COUNT - 1; c >= 0; --c) {
+            const stress_adaptive *a = &s->adaptive[k][c];
+            double agjk[4] = {0, 0, 0, 0}, coal[4] = {0, 0, 0, 0}, best = 0, coal_best = 0, ad;
+            int n[4] = {0, 0, 0, 0}, coal_arg = 0;
+            if (a->n == 0) continue;
+            for (i = 0; i < d->count; ++i) {
+                const coal_bench_record *r = &d->recs[i];
+                if (r->agjk.mode != BENCH_DISTANCE ||
+                    s->sets[k].problems[r->agjk.problem].category != c)
+                    continue;
+                for (m = 0; m < 4; ++m)
+                    if (r->agjk.method == coal_bench_methods[m]) {
+                        agjk[m] += r->agjk.run.support_calls;
+                        coal[m] += r->coal.run.support_calls;
+                        n[m]++;
+                    }
+            }
+            ad = a->calls / a->n;
+            fprintf(md, "| %s | %s |", families[k].name, bench_category_name(c));
+            for (m = 0; m < 4; ++m) {
+                double v = n[m] ? agjk[m] / n[m] : NAN, cv = n[m] ? coal[m] / n[m] : NAN;
+                fprintf(md, " %.2f |", v);
+                if (m == 0 || v < best) best = v;
+                if (m == 0 || cv < coal_best) {
+                    coal_best = cv;
+                    coal_arg = m;
+                }
+            }
+            fprintf(md, " %.2f | %.2f (%s) | **%.2f** |\n", best, coal_best,
+                    coal_bench_method_short[coal_arg], ad);
+            ++rows;
+            worse += ad > best;
+            worse_gjk += n[0] && ad > agjk[0] / n[0];
+            worse_coal += ad > coal_best;
+            wrong += a->wrong;
+            misses += a->violations;
+            no_verdict += a->no_verdict;
+            runs += a->n;
+        }
+    }
+    fprintf(md, "\nAdaptive above the best of the four in %d of %d rows, above GJK in %d, above "
+                "Coal's best in %d. Its %d answers (distance mode, the tolerance of the table "
+                "above) against the certified reference: %d wrong verdicts, %d certified "
+                "intervals missing the reference, %d without a verdict.\n\n",
+            worse, rows, worse_gjk, worse_coal, runs, wrong, misses, no_verdict);
 }
 
 static const char *status_name(int status) { return agjk_status_string((agjk_status)status); }
@@ -285,6 +380,7 @@ int bench_stress_write(const bench_config *cfg, const bench_stress *s) {
                          "wrong or as no verdict) %d.\n\n",
                 a.runs, a.agjk_wrong, a.coal_wrong, a.agjk_off, a.coal_off, a.agjk_nc, a.coal_nc,
                 a.agjk_violations, a.agjk_contact);
+    adaptive_table(md, s);
     trouble = a.agjk_wrong + a.agjk_violations + a.agjk_nc;
     if (trouble) {
         fprintf(md, "agjk runs to look at (wrong verdict, certified interval missing the "
