@@ -19,14 +19,18 @@
  *      while ||x_k|| >= 0.3 ||x_0||, ADAPTIVE_FAR_SIZE), and iteration 1 also
  *      when s_0 lies opposite x_0 (ADAPTIVE_OPPOSITE_RATIO).
  *      A given x_0 (a cache's or a caller's guess) starts in the Nesterov
- *      phase.
+ *      phase. A Nesterov direction against the gradient x_k (or nearly
+ *      across it at iteration 2 after a plain step) is replaced by a plain
+ *      step (ADAPTIVE_AGAINST_COS).
  *   3. Plain GJK to the end: after the Alg. 6 fallback; after iteration 1 of
  *      the Polyak phase when its support was s_0 again (retried once in the
  *      normalised Nesterov direction, agjk__momentum_retry); as soon as a Nesterov
  *      support gives a worse lower bound <d_k, s_k> / ||d_k|| than the best so
  *      far (the momentum overshoots: adaptive restart in the sense of
  *      O'Donoghue and Candes, "Adaptive restart for accelerated gradient
- *      schemes", 2015, here restarting to the gradient direction for good);
+ *      schemes", 2015, here restarting to the gradient direction for good),
+ *      or from iteration 8 on as soon as a Nesterov step closes too little
+ *      of the gap the best plane leaves (ADAPTIVE_CREEP);
  *      or as soon as a support point of A or of B repeats exactly (a vertex:
  *      flat faces, where GJK's exact steps beat momentum).
  *
@@ -74,6 +78,59 @@
  * box's vertex often comes back two supports later): seeds 1-4, distant
  * boxes, 0.02-0.03 calls fewer than with the last support alone; the last
  * four gave the same counts to 0.007. */
+
+/* A Nesterov direction d_k with <d_k, x_k> < 0 points away from the descent
+ * direction: the momentum has overshot (the gradient test of O'Donoghue and
+ * Candes' adaptive restart). Its support is wasted: on stiff ellipsoids
+ * (needles, pancakes) the iterate zigzags within a segment of D for a dozen
+ * supports while each plane is a little better than the last, so the plane
+ * test never fires. A plain step in direction x_k instead, whose plane then
+ * usually is worse than the best and restarts to GJK for good. At iteration
+ * 2 right after a plain step at iteration 1 (s_0 was opposite x_0, or the
+ * shapes far apart) already when the cosine of d_k and x_k is below this:
+ * the mix, dominated by the long x_0, there often lands on s_0 again (flat
+ * boxes, overlapping). Measured (support calls per distance query, seeds
+ * 1-3; stress set at 60 pairs x 5 poses): stiff ellipsoids overlapping
+ * 12.95 / 13.15 / 13.37 -> 11.87 / 11.85 / 12.05 (GJK 11.97 / 12.16 /
+ * 12.32), close 13.37 / 12.37 / 12.62 -> 13.32 / 12.00 / 12.16, flat boxes
+ * overlapping 5.25 / 5.29 / 5.25 -> 5.12 / 5.13 / 5.09 (GJK 5.16 / 5.10 /
+ * 5.10); the protocol's overlapping boxes 4.91 / 4.91 / 4.98 -> 4.77 /
+ * 4.75 / 4.80, hulls 5.58 / 5.74 / 5.75 -> 5.40 / 5.57 / 5.64, meshes
+ * 5.58 / 5.58 / 5.53 -> 5.45 / 5.44 / 5.39, ellipsoids 5.41 / 5.49 / 5.52
+ * -> 5.23 / 5.34 / 5.34, no row of the protocol higher (on the stress set
+ * touching ellipsoids overlapping +0.01-0.13, still 1.3 below the best of
+ * the four). The test at 0 gives flat boxes 0.06-0.08 of their gain, the
+ * iteration-2 test the rest; there 0.1, 0.3, 0.5 and 0.8 gave the same means
+ * to 0.02. Rejected (measured with a restart on small progress also in
+ * place): a cosine threshold of 0.1 at every iteration (close ellipsoids
+ * +0.1-0.16, touching ellipsoids +0.3-0.7), or 0.1 at iteration 2 whatever
+ * the step before (close ellipsoids +0.1); and (without it) the test after
+ * the support instead of before, a restart once the support is paid: stiff
+ * ellipsoids overlapping 12.34 / 12.32 / 12.44. */
+#define ADAPTIVE_AGAINST_COS 0.3
+
+/* From iteration ADAPTIVE_CREEP_FROM on, restart (plain GJK to the end)
+ * after a Nesterov step that shrinks ||x|| by less than ADAPTIVE_CREEP of the
+ * gap ||x_k|| - max(plane, 0) that the best support plane leaves. The
+ * momentum term, a mix of the early, much longer iterates, swamps the
+ * gradient once ||x|| has shrunk by orders of magnitude, and the iterate
+ * creeps along a face for tens of iterations while every plane still
+ * improves, so the plane test never fires (stiff ellipsoids: 59 supports
+ * instead of GJK's 20 on one overlapping needle pair). Relative to the gap,
+ * not to ||x||: near the optimum of close shapes ||x|| barely moves while the
+ * gap halves at each step (a test on ||x|| alone, 1% of it, cost the
+ * protocol's close ellipsoids 8.77 -> 10.32 calls). Measured (support calls
+ * per distance query, seeds 1 / 2 / 3; stress set at 60 pairs x 5 poses):
+ * stiff ellipsoids overlapping 11.87 / 11.85 / 12.05 -> 11.63 / 11.77 /
+ * 11.85, close 13.32 / 12.00 / 12.16 -> 12.39 / 11.10 / 11.07, distant
+ * 10.07 / 9.18 / 8.75 -> 9.46 / 8.53 / 8.34; every row of the protocol the
+ * same to 0.005. From iteration 0 (the gains 0.1-0.5 calls larger) it cost
+ * the protocol's close ellipsoids 8.77 / 8.81 / 8.91 -> 8.78 / 8.85 / 8.96
+ * and close hulls (seed 3) 7.33 -> 7.36, from iteration 4 8.77 / 8.82 / 8.94
+ * and 7.34, from 6 8.92 on seed 3; thresholds 0.1 and 0.2 from iteration 8
+ * gave the stiff rows within 0.1 of 0.05. */
+#define ADAPTIVE_CREEP_FROM 8
+#define ADAPTIVE_CREEP 0.05
 
 /* Weight of d_0 in the first Polyak step (Polyak: 1/2). Measured, seeds 1-4:
  * 0.3 brings close and overlapping boxes and meshes from 0.1-0.3 calls above
@@ -184,7 +241,18 @@ void agjk__momentum_plane(agjk__momentum *m, agjk_vec3 d, agjk_vec3 s, agjk_vec3
     m->x_k = x;
 }
 
-int agjk__momentum_update(agjk__momentum *m, int k, agjk_vec3 d, const agjk__vertex *s) {
+/* Whether the Nesterov step from x_k (m->x_k) to x_{k+1} (squared norm
+ * x2_new) closed less than ADAPTIVE_CREEP of the gap ||x_k|| - max(plane, 0)
+ * that the best support plane leaves. */
+static int creeps(const agjk__momentum *m, double x2_new) {
+    double xk = v3_norm(m->x_k);
+    double lower = m->plane > 0.0 ? m->plane : 0.0;
+    double level = xk - ADAPTIVE_CREEP * (xk - lower); /* >= 0 */
+    return x2_new > level * level;
+}
+
+int agjk__momentum_update(agjk__momentum *m, int k, agjk_vec3 d, const agjk__vertex *s,
+                          double x2_new) {
     int stopped = 0;
     /* A point of A or of B met again, bit for bit, in another direction: a
      * vertex, so a flat-faced shape, where momentum directions keep landing on
@@ -206,9 +274,13 @@ int agjk__momentum_update(agjk__momentum *m, int k, agjk_vec3 d, const agjk__ver
     if (m->method == AGJK_METHOD_ADAPTIVE && k > 0 && m->phase != AGJK__PHASE_FINAL) {
         if (!m->active) {
             m->phase = AGJK__PHASE_FINAL; /* the solver's Alg. 6 fallback */
-        } else if (flat || (m->phase == AGJK__PHASE_NESTEROV && m->omega < m->plane_before)) {
-            /* Restart to plain GJK directions for good (flat faces, or a
-             * momentum step whose plane is worse than the best so far). */
+        } else if (flat ||
+                   (m->phase == AGJK__PHASE_NESTEROV &&
+                    (m->omega < m->plane_before ||
+                     (k >= ADAPTIVE_CREEP_FROM && creeps(m, x2_new))))) {
+            /* Restart to plain GJK directions for good (flat faces, a
+             * momentum step whose plane is worse than the best so far, or,
+             * late, one that closed too little of the gap: ADAPTIVE_CREEP). */
             m->phase = AGJK__PHASE_FINAL;
             m->active = 0;
             stopped = 1;
@@ -248,12 +320,22 @@ agjk_vec3 agjk__momentum_direction_other(const agjk__momentum *m, int k, agjk_ve
                        xn * xn >= ADAPTIVE_FAR_SIZE * ADAPTIVE_FAR_SIZE * m->x0_norm2);
             plain = far || (k == 1 && m->plane <= -ADAPTIVE_OPPOSITE_RATIO * xn);
         }
-        if (plain)
+        if (plain) {
             d = x;
-        else if (m->phase == AGJK__PHASE_POLYAK) /* with a lighter first momentum step */
+        } else if (m->phase == AGJK__PHASE_POLYAK) { /* with a lighter first momentum step */
             d = agjk__polyak_mix(m, k == 1 ? ADAPTIVE_POLYAK_FIRST : 1.0 / (kk + 1.0), x);
-        else
+        } else {
             d = agjk__nesterov_mix(m, k, x);
+            /* A Nesterov direction against the gradient (or, right after a
+             * plain step at iteration 1, nearly across it): a plain step
+             * instead (ADAPTIVE_AGAINST_COS). */
+            double dx = v3_dot(d, x);
+            if (dx < 0.0 ||
+                (k == 2 && m->d_prev.x == m->x_k.x && m->d_prev.y == m->x_k.y &&
+                 m->d_prev.z == m->x_k.z &&
+                 dx < ADAPTIVE_AGAINST_COS * sqrt(v3_norm2(d) * v3_norm2(x))))
+                d = x;
+        }
         break;
     }
     default:

@@ -996,7 +996,7 @@ void agjk__solve(agjk__minkowski *md, const agjk__solve_input *in, agjk__solve_o
         /* d_{k-1}, s_{k-1}; the adaptive method may switch phase here, and
          * flat faces are recorded for the cache. */
         if (adaptive || in->track_flat) {
-            if (agjk__momentum_update(&sv.m, k, d, &s)) out->momentum_stop = k;
+            if (agjk__momentum_update(&sv.m, k, d, &s, sv.x2)) out->momentum_stop = k;
         } else {
             sv.m.d_prev = d;
             sv.m.s_prev = s.w;

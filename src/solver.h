@@ -79,10 +79,12 @@ agjk_vec3 agjk__momentum_retry(const agjk__momentum *m, agjk_vec3 x);
  * direction d at iterate x (before the stopping tests). */
 void agjk__momentum_plane(agjk__momentum *m, agjk_vec3 d, agjk_vec3 s, agjk_vec3 x);
 
-/* End of iteration k, which searched direction d and found s: keeps them as
- * d_{k-1}, s_{k-1}, and lets the adaptive method switch phase. Returns 1 when
- * the adaptive method switched momentum off for good. */
-int agjk__momentum_update(agjk__momentum *m, int k, agjk_vec3 d, const agjk__vertex *s);
+/* End of iteration k, which searched direction d and found s, and moved the
+ * iterate to x_{k+1} of squared norm x2_new: keeps d and s as d_{k-1},
+ * s_{k-1}, and lets the adaptive method switch phase. Returns 1 when the
+ * adaptive method switched momentum off for good. */
+int agjk__momentum_update(agjk__momentum *m, int k, agjk_vec3 d, const agjk__vertex *s,
+                          double x2_new);
 
 /* Multiplies the policy's stored vectors by the power of two f (rescaling). */
 void agjk__momentum_rescale(agjk__momentum *m, double f);
