@@ -134,9 +134,9 @@ static inline double agjk__minkowski_separation_level(const agjk__minkowski *md)
     return md->margin + 4.0 * agjk__minkowski_caller_granule(md);
 }
 
-/* Direct support of the simplest built-in shapes (issue: the call through
- * the pointer, with the direction and the point passed through memory, took
- * 3-7% of a query on boxes and ellipsoids). Their callbacks are referenced
+/* Direct support of the simplest built-in shapes: the call through the
+ * pointer, with the direction and the point passed through memory, took
+ * 3-5% of a query's time on boxes and ellipsoids. Their callbacks are referenced
  * weakly: a program that never creates such a shape links none of its code,
  * the reference is then null, and no callback ever matches it. Where weak
  * references are not available (non-ELF targets), every support goes
