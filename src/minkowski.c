@@ -31,8 +31,7 @@ static void set_limits(agjk__minkowski *md) {
     md->raw_limit = md->scale == 1.0 ? md->point_limit : -1.0;
     /* A tiny problem (scale > 1) needs unit-size directions: a small direction
      * times its tiny coordinates would underflow and lose the sign. */
-    md->direction_min = md->scale > 1.0 ? 1.0 : AGJK__DIRECTION_MIN;
-    md->direction_floor2 = 4.0 * md->direction_min * md->direction_min;
+    agjk__minkowski_set_direction_min(md, md->scale > 1.0 ? 1.0 : AGJK__DIRECTION_MIN);
 }
 
 void agjk__minkowski_init(agjk__minkowski *md, const agjk_shape *a, const agjk_pose *pose_a,
@@ -72,14 +71,11 @@ void agjk__minkowski_init(agjk__minkowski *md, const agjk_shape *a, const agjk_p
     md->translation_size = v3_maxabs(md->translation);
     md->noise_floor = 0.0;
     agjk__minkowski_grow(md, 0.0);
-    /* set_limits for scale 1, except that the problem's size is unknown until
+    /* The limits of scale 1, except that the problem's size is unknown until
      * the first support: unit-size directions until agjk__minkowski_set_scale
      * has seen it. */
-    md->point_limit = AGJK__SOLVER_SIZE_LIMIT < AGJK_MAX_COORDINATE ? AGJK__SOLVER_SIZE_LIMIT
-                                                                     : AGJK_MAX_COORDINATE;
-    md->raw_limit = md->point_limit;
-    md->direction_min = 1.0;
-    md->direction_floor2 = 4.0;
+    set_limits(md);
+    agjk__minkowski_set_direction_min(md, 1.0);
 }
 
 /* Multiplies everything md holds in solver units by f (a power of two). */

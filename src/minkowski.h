@@ -93,6 +93,13 @@ double agjk__minkowski_rescale_extreme(agjk__minkowski *md, double size);
 agjk_vec3 agjk__minkowski_rescue_direction(const agjk__minkowski *md, agjk_vec3 d);
 void agjk__minkowski_points_slow(agjk__minkowski *md, agjk_vec3 *pa, agjk_vec3 *pb);
 
+/* Directions handed to callbacks keep max |d_i| >= dmin from now on: records
+ * it with 4 dmin^2, its test on a squared norm (agjk__minkowski_support). */
+static inline void agjk__minkowski_set_direction_min(agjk__minkowski *md, double dmin) {
+    md->direction_min = dmin;
+    md->direction_floor2 = 4.0 * dmin * dmin;
+}
+
 static inline double agjk__minkowski_set_scale(agjk__minkowski *md) {
     double size = md->magnitude;
     if (md->translation_size > size) size = md->translation_size;
@@ -100,8 +107,7 @@ static inline double agjk__minkowski_set_scale(agjk__minkowski *md) {
     /* The scale is 1 here, or below 1 after a shrink by the first support
      * (which set raw_limit already): either way directions may now be as
      * small as AGJK__DIRECTION_MIN. */
-    md->direction_min = AGJK__DIRECTION_MIN;
-    md->direction_floor2 = 4.0 * AGJK__DIRECTION_MIN * AGJK__DIRECTION_MIN;
+    agjk__minkowski_set_direction_min(md, AGJK__DIRECTION_MIN);
     /* Problems of ordinary size stay in the caller's units (no cost, and power-
      * of-two scalings commute with rounding anyway); only extreme ones move. */
     if (!(size > 0.0) || (size >= 0x1p-100 && size <= 0x1p100)) return 1.0;

@@ -41,8 +41,9 @@ typedef struct agjk_vec3 {
  *  `rotation` is row-major (rotation[row][column]) and must be a rotation:
  *  rows 0 and 1 orthonormal and row 2 their cross product, each to within
  *  1e-6 per entry (so R R^T is within 6e-6 of I and det R within 4e-6 of
- *  +1); queries reject anything else with AGJK_STATUS_INVALID_INPUT. A rotation orthonormal only to within e (a
- *  float-converted one, say) stands for the rotation it approximates: B is
+ *  +1); queries reject anything else with AGJK_STATUS_INVALID_INPUT. A
+ *  rotation orthonormal only to within e (a float-converted one, say)
+ *  stands for the rotation it approximates: B is
  *  taken into A's frame by rotation_A^T, answers are certified for that
  *  relative pose, and world-frame outputs (normal, witness points) come back
  *  through rotation_A, so they carry e: against shapes placed by the matrices
