@@ -2,7 +2,7 @@
 # Run one test alone: CK_RUN_CASE=<test name> out/tests/core/test_simplex
 
 CORE_TESTS := test_simplex test_shapes test_api test_analytic test_methods test_properties test_collide \
-              test_verdicts test_penetration test_cache
+              test_verdicts test_penetration test_cache test_subnormals
 CORE_TEST_BINS := $(CORE_TESTS:%=$(OUT)/tests/core/%)
 CORE_TOOL_BINS := $(OUT)/tests/core/iterations
 
