@@ -52,6 +52,8 @@ typedef struct agjk__minkowski {
     /* Product of the factors agjk__minkowski_shrink applied since the solver
      * last looked; the solver multiplies its own state by it and resets it. */
     double rescaled;
+    /* Where a support callback writes its point (agjk__shape_support). */
+    agjk_vec3 callback_point;
 } agjk__minkowski;
 
 /* Checks a pose: translation in range, rotation orthonormal with det +1
@@ -172,31 +174,36 @@ __attribute__((weak)) void agjk__ellipsoid_support(const void *, const agjk_vec3
 #define AGJK__DIRECT_SUPPORT 0
 #endif
 
-/* fn(data, &d, out, hint), computed in place when `direct` (a constant: the
- * hot call sites; the rare ones keep one call, and the code small) and fn is
- * a built-in one. */
-static AGJK__ALWAYS_INLINE void agjk__shape_support(agjk_support_fn fn, const void *data,
-                                                    agjk_vec3 d, agjk_vec3 *out, int *hint,
-                                                    int direct) {
+/* fn(data, &d, &point, hint), computed in place when `direct` (a constant:
+ * the hot call sites; the rare ones keep one call, and the code small) and
+ * fn is a built-in one. Returned by value, and the callback given a copy of
+ * d and md->callback_point to write: no address of the caller's point or
+ * direction is ever taken, so that they stay in registers on the inline
+ * paths (with `out` the caller's own point, clang kept it on the stack on
+ * every path: clang-built close box queries took 250 ns instead of 222; gcc's
+ * support path 217 instructions per call on ellipsoids instead of 181). */
+static AGJK__ALWAYS_INLINE agjk_vec3 agjk__shape_support(agjk__minkowski *md, agjk_support_fn fn,
+                                                         const void *data, agjk_vec3 d, int *hint,
+                                                         int direct) {
 #if AGJK__DIRECT_SUPPORT
     if (!direct) {
         /* (the call below) */
     } else if (fn == agjk__box_support) {
-        *out = agjk__box_point((const agjk_box *)data, d);
-        return;
+        return agjk__box_point((const agjk_box *)data, d);
     } else if (fn == agjk__ellipsoid_support) {
-        if (agjk__ellipsoid_point((const agjk_ellipsoid *)data, d, out)) return;
+        agjk_vec3 p;
+        if (agjk__ellipsoid_point((const agjk_ellipsoid *)data, d, &p)) return p;
     } else if (fn == agjk__point_support) {
-        *out = v3(0.0, 0.0, 0.0);
-        return;
+        return v3(0.0, 0.0, 0.0);
     } else if (fn == agjk__segment_support) {
-        *out = agjk__segment_point((const agjk_capsule *)data, d);
-        return;
+        return agjk__segment_point((const agjk_capsule *)data, d);
     }
 #else
     (void)direct;
 #endif
-    fn(data, &d, out, hint);
+    agjk_vec3 dd = d;
+    fn(data, &dd, &md->callback_point, hint);
+    return md->callback_point;
 }
 
 /* s = argmin_{s in D} <d, s> = S_A(-d) - S_B(d) (paper eq. 7-8), d in A's frame,
@@ -218,9 +225,8 @@ static AGJK__ALWAYS_INLINE void agjk__minkowski_support(agjk__minkowski *md, agj
     }
     agjk_vec3 na = v3_neg(d);
     agjk_vec3 db = m3_tmul(&md->rotation[0][0], d);
-    agjk_vec3 pa, pb;
-    agjk__shape_support(md->support_a, md->data_a, na, &pa, &md->hint_a, direct);
-    agjk__shape_support(md->support_b, md->data_b, db, &pb, &md->hint_b, direct);
+    agjk_vec3 pa = agjk__shape_support(md, md->support_a, md->data_a, na, &md->hint_a, direct);
+    agjk_vec3 pb = agjk__shape_support(md, md->support_b, md->data_b, db, &md->hint_b, direct);
     /* One test covers NaN, Inf, AGJK_MAX_COORDINATE, the solver's size
      * limit and a scale other than 1: the 1-norm propagates NaN and bounds
      * every coordinate. */
@@ -233,7 +239,12 @@ static AGJK__ALWAYS_INLINE void agjk__minkowski_support(agjk__minkowski *md, agj
         double raw = v3_maxabs(pa) + v3_maxabs(pb);
         if (raw > md->magnitude) agjk__minkowski_grow(md, raw);
     } else {
-        agjk__minkowski_points_slow(md, &pa, &pb);
+        /* (Through copies: pa and pb themselves never have their address
+         * taken, so that they stay in registers.) */
+        agjk_vec3 qa = pa, qb = pb;
+        agjk__minkowski_points_slow(md, &qa, &qb);
+        pa = qa;
+        pb = qb;
     }
     agjk_vec3 b = v3_add(m3_mul(&md->rotation[0][0], pb), md->translation);
     out->w = v3_sub(pa, b);
