@@ -221,24 +221,12 @@ void agjk__momentum_rescale(agjk__momentum *m, double f) {
      * a rescale, which is rare, goes unnoticed.) */
 }
 
-void agjk__momentum_plane(agjk__momentum *m, agjk_vec3 d, agjk_vec3 s, agjk_vec3 x) {
-    /* <d, s> / ||d||, with ||d|| from d brought to unit size when its square
-     * leaves the safe range: x_0 = c_A - c_B is used as given, and frame
-     * origins 1e-159 apart gave a squared norm in the subnormals whose few
-     * bits put this plane 1e-17 (6e-11 relative) beyond the support it
-     * bounds (fuzz). */
-    double n2 = v3_norm2(d);
-    if (n2 >= 0x1p-900 && n2 <= 0x1p900)
-        m->omega = v3_dot(d, s) / sqrt(n2);
-    else
-        m->omega = v3_maxabs(d) > 0.0 ? v3_dot(v3_normalize(d), s) : -INFINITY;
-    m->plane_before = m->plane;
-    if (m->x0_norm2 < 0.0) m->x0_norm2 = v3_norm2(x); /* the first plane: x = x_0 */
-    if (m->omega > m->plane) {
-        m->plane = m->omega;
-        m->d_best = d;
-    }
-    m->x_k = x;
+double agjk__plane_of_extreme(agjk_vec3 d, agjk_vec3 s) {
+    /* <d, s> / ||d|| with d brought to unit size first: x_0 = c_A - c_B is
+     * used as given, and frame origins 1e-159 apart gave a squared norm in
+     * the subnormals whose few bits put this plane 1e-17 (6e-11 relative)
+     * beyond the support it bounds (fuzz). */
+    return v3_maxabs(d) > 0.0 ? v3_dot(v3_normalize(d), s) : -INFINITY;
 }
 
 /* Whether the Nesterov step from x_k (m->x_k) to x_{k+1} (squared norm
