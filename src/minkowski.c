@@ -67,7 +67,15 @@ void agjk__minkowski_init(agjk__minkowski *md, const agjk_shape *a, const agjk_p
     md->rotation[2][0] = r2.x;
     md->rotation[2][1] = r2.y;
     md->rotation[2][2] = r2.z;
-    md->translation = m3_tmul(ra, v3_sub(pose_b->translation, pose_a->translation));
+    /* Stored through a copy, which gcc writes as one 16-byte store of x and y
+     * and one of z: the first support reads x and y back with one 16-byte
+     * load right after, and from three 8-byte stores (gcc's choice for the
+     * plain assignment) the load cannot take its data from the store buffer
+     * and waits for the stores to reach the cache: 7 ns of a 63 ns
+     * one-support query on ellipsoids, 4 of 50 on boxes. */
+    agjk_vec3 t = m3_tmul(ra, v3_sub(pose_b->translation, pose_a->translation));
+    double stored[3] = {t.x, t.y, t.z};
+    memcpy(&md->translation, stored, sizeof stored);
     md->translation_size = v3_maxabs(md->translation);
     md->noise_floor = 0.0;
     agjk__minkowski_grow(md, 0.0);
