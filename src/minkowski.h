@@ -181,7 +181,7 @@ __attribute__((weak)) void agjk__ellipsoid_support(const void *, const agjk_vec3
  * direction is ever taken, so that they stay in registers on the inline
  * paths (with `out` the caller's own point, clang kept it on the stack on
  * every path: clang-built close box queries took 250 ns instead of 222; gcc's
- * support path 217 instructions per call on ellipsoids instead of 181). */
+ * support path 217 instructions per call on ellipsoids instead of 185). */
 static AGJK__ALWAYS_INLINE agjk_vec3 agjk__shape_support(agjk__minkowski *md, agjk_support_fn fn,
                                                          const void *data, agjk_vec3 d, int *hint,
                                                          int direct) {
