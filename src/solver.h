@@ -80,9 +80,9 @@ agjk_vec3 agjk__momentum_retry(const agjk__momentum *m, agjk_vec3 x);
 double agjk__plane_of_extreme(agjk_vec3 d, agjk_vec3 s);
 
 /* Adaptive method: records the support plane of s (a point of D) found in
- * direction d at iterate x (before the stopping tests). Inline: the call,
- * with three vectors passed through memory, took a tenth of the method's
- * bookkeeping. */
+ * direction d at iterate x (before the stopping tests). Inline: the call
+ * passed three vectors through memory on every iteration (1.3-1.5% of an
+ * adaptive query's time on close ellipsoids and boxes). */
 static inline void agjk__momentum_plane(agjk__momentum *m, agjk_vec3 d, agjk_vec3 s,
                                         agjk_vec3 x) {
     double n2 = v3_norm2(d);
