@@ -36,6 +36,12 @@ typedef struct solver {
     agjk_vec3 w[4], a[4], b[4];
     double lambda[4];
     int count;
+    /* The points of A kept (in->keep_points), and of B too: for EPA and the
+     * cache. The witness point on B needs none of them: it is taken as
+     * sum lambda_i (a_i - w_i) (finish), but for plain Frank-Wolfe, whose
+     * one vertex is a combination whose point of D, x, comes from a
+     * projection that may clean it up (which keeps B's points too). */
+    int keep_a, keep_b, b_from_a;
     agjk_vec3 x;
     double x2;          /* ||x||^2 */
     agjk__momentum m;
@@ -55,9 +61,8 @@ static AGJK__NOINLINE AGJK__COLD void follow_rescale(solver *sv, agjk_vec3 *d) {
     md->rescaled = 1.0;
     for (int i = 0; i < sv->count; ++i) {
         sv->w[i] = v3_scale(sv->w[i], f);
-        if (!sv->in->keep_points) continue;
-        sv->a[i] = v3_scale(sv->a[i], f);
-        sv->b[i] = v3_scale(sv->b[i], f);
+        if (sv->keep_a) sv->a[i] = v3_scale(sv->a[i], f);
+        if (sv->keep_b) sv->b[i] = v3_scale(sv->b[i], f);
     }
     sv->x = v3_scale(sv->x, f);
     sv->x2 = v3_norm2(sv->x);
@@ -502,9 +507,9 @@ static agjk_vec3 member_point(const solver *sv) {
 static int update_simplex(solver *sv, const agjk__vertex *s, agjk_vec3 *x) {
     int n = sv->count;
     sv->w[n] = s->w;
-    if (sv->in->keep_points) {
+    if (sv->keep_a) {
         sv->a[n] = s->a;
-        sv->b[n] = s->b;
+        if (sv->keep_b) sv->b[n] = s->b;
     }
     ++n;
     double l[4];
@@ -527,13 +532,15 @@ static int update_simplex(solver *sv, const agjk__vertex *s, agjk_vec3 *x) {
     sv->lambda[0] = l[f0];
     sv->lambda[1] = l[f1];
     sv->lambda[2] = l[f2];
-    if (sv->in->keep_points) {
+    if (sv->keep_a) {
         sv->a[0] = sv->a[f0];
         sv->a[1] = sv->a[f1];
         sv->a[2] = sv->a[f2];
-        sv->b[0] = sv->b[f0];
-        sv->b[1] = sv->b[f1];
-        sv->b[2] = sv->b[f2];
+        if (sv->keep_b) {
+            sv->b[0] = sv->b[f0];
+            sv->b[1] = sv->b[f1];
+            sv->b[2] = sv->b[f2];
+        }
     }
     sv->count = support_size[mask & 0xFu];
     return 0;
@@ -545,7 +552,7 @@ static int update_simplex(solver *sv, const agjk__vertex *s, agjk_vec3 *x) {
 static void update_frank_wolfe(solver *sv, const agjk__vertex *s, agjk_vec3 *x) {
     if (sv->count == 0) {
         sv->w[0] = s->w;
-        if (sv->in->keep_points) {
+        if (sv->keep_a) {
             sv->a[0] = s->a;
             sv->b[0] = s->b;
         }
@@ -553,7 +560,7 @@ static void update_frank_wolfe(solver *sv, const agjk__vertex *s, agjk_vec3 *x) 
         agjk_vec3 w[2] = {sv->w[0], s->w};
         double l[4];
         agjk__simplex_project_gjk(w, 2, l, x);
-        if (sv->in->keep_points) {
+        if (sv->keep_a) {
             sv->a[0] = v3_lerp2(sv->a[0], l[0], s->a, l[1]);
             sv->b[0] = v3_lerp2(sv->b[0], l[0], s->b, l[1]);
         }
@@ -710,9 +717,20 @@ static void finish(const solver *sv, agjk__solve_output *out) {
     out->x_member = sv->count > 0 && out->outcome != AGJK__INTERSECTING ? member_point(sv) : sv->x;
     out->noise = sv->md->noise;
     agjk_vec3 a = v3(0.0, 0.0, 0.0), b = v3(0.0, 0.0, 0.0);
-    for (int i = 0; in->want_witness && i < sv->count; ++i) {
-        a = v3_add(a, v3_scale(sv->a[i], sv->lambda[i]));
-        b = v3_add(b, v3_scale(sv->b[i], sv->lambda[i]));
+    if (in->want_witness) {
+        /* B's: sum lambda_i (a_i - w_i), each a_i - w_i being b_i to the
+         * rounding of w_i = a_i - b_i; taken so whether or not b_i were
+         * kept, so that a warm-started query that ends where a cold one
+         * does answers the same bits. */
+        agjk_vec3 p = v3(0.0, 0.0, 0.0);
+        for (int i = 0; i < sv->count; ++i) {
+            a = v3_add(a, v3_scale(sv->a[i], sv->lambda[i]));
+            if (sv->b_from_a)
+                p = v3_add(p, v3_scale(sv->w[i], sv->lambda[i]));
+            else
+                b = v3_add(b, v3_scale(sv->b[i], sv->lambda[i]));
+        }
+        if (sv->b_from_a) b = v3_sub(a, p);
     }
     out->a = a;
     out->b = b;
@@ -720,8 +738,8 @@ static void finish(const solver *sv, agjk__solve_output *out) {
     int n = in->want_simplex ? sv->count : 0;
     for (int i = 0; i < n && !out->warm_kept; ++i) {
         out->simplex[i].w = sv->w[i];
-        out->simplex[i].a = in->keep_points ? sv->a[i] : v3(0.0, 0.0, 0.0);
-        out->simplex[i].b = in->keep_points ? sv->b[i] : v3(0.0, 0.0, 0.0);
+        out->simplex[i].a = sv->keep_a ? sv->a[i] : v3(0.0, 0.0, 0.0);
+        out->simplex[i].b = sv->keep_b ? sv->b[i] : v3(0.0, 0.0, 0.0);
     }
     out->simplex_count = n;
     out->flat = sv->m.flat_seen;
@@ -751,6 +769,9 @@ void agjk__solve(agjk__minkowski *md, const agjk__solve_input *in, agjk__solve_o
     sv.md = md;
     sv.in = in;
     sv.count = 0;
+    sv.keep_a = in->keep_points;
+    sv.b_from_a = in->method != AGJK_METHOD_FRANK_WOLFE;
+    sv.keep_b = in->keep_points && (in->want_simplex || !sv.b_from_a);
 
     out->outcome = AGJK__ITERATION_CAP;
     out->gap = INFINITY;
@@ -805,7 +826,7 @@ void agjk__solve(agjk__minkowski *md, const agjk__solve_input *in, agjk__solve_o
             finish(&sv, out);
             return;
         }
-        if (in->keep_points) warm_seed_points(in, &sv);
+        if (sv.keep_a) warm_seed_points(in, &sv);
     }
     /* x_0 in solver units: d_{-1} = s_{-1} = x_0. */
     agjk__momentum_init(&sv.m, in->method, d0, in->x0_given);

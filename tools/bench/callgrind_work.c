@@ -77,7 +77,9 @@ static int work_method(void) {
 }
 
 /* The query as bench_solve() asks it: plain GJK (see work_method),
- * tolerance 1e-8, cap 1000, no witness points; and the same for Coal. */
+ * tolerance 1e-8, cap 1000, no witness points (agjk computes them too with
+ * AGJK_WORK_WITNESS set in the environment, a look at their cost; Coal's
+ * query is the same either way); and the same for Coal. */
 static void agjk_query_init(agjk_query *q, const bench_set *set, const bench_problem *p,
                             const workload *w) {
     q->a = &set->shapes[p->a];
@@ -89,7 +91,7 @@ static void agjk_query_init(agjk_query *q, const bench_set *set, const bench_pro
                                           AGJK_METHOD_POLYAK, AGJK_METHOD_ADAPTIVE}[work_method()];
     q->opt.tolerance = 1e-8;
     q->opt.max_iterations = 1000;
-    q->opt.compute = AGJK_COMPUTE_DISTANCE;
+    q->opt.compute = getenv("AGJK_WORK_WITNESS") ? AGJK_COMPUTE_WITNESS : AGJK_COMPUTE_DISTANCE;
 }
 
 static void coal_desc_init(coal_query_desc *d, const agjk_query *q) {
