@@ -42,6 +42,11 @@ static void usage(FILE *f) {
         "                    huge, far and nearly touching shapes (default 20; 0 disables it;\n"
         "                    runs with the Coal comparison, R = --coal-reps)\n"
         "  --stress-poses M  poses per pair of the stress set (default 5)\n"
+        "  --coal-processes K  run the agjk/Coal comparisons (protocol and stress set) in K\n"
+        "                    processes, each problem's times the median over them (default\n"
+        "                    3; 1 with --quick): one process can start slow for a library\n"
+        "  --coal-child FILE (internal) one of those processes: run only the comparisons\n"
+        "                    and save their times to FILE\n"
         "  --depth-reps R    repetitions in the penetration-depth comparison with libccd\n"
         "                    (default 20; 0 disables it)\n"
         "  --coherent-pairs K  pairs per family moved along smooth trajectories, queried\n"
@@ -78,6 +83,7 @@ static int parse(int argc, char **argv, bench_config *c) {
     c->wp_reps = 10;
     c->ccd_reps = 50;
     c->coal_reps = 100;
+    c->coal_processes = 3;
     c->stress_pairs = 20;
     c->stress_poses = 5;
     c->depth_reps = 20;
@@ -103,6 +109,7 @@ static int parse(int argc, char **argv, bench_config *c) {
         INT_OPT("--wp-reps", wp_reps)
         INT_OPT("--ccd-reps", ccd_reps)
         INT_OPT("--coal-reps", coal_reps)
+        INT_OPT("--coal-processes", coal_processes)
         INT_OPT("--stress-pairs", stress_pairs)
         INT_OPT("--stress-poses", stress_poses)
         INT_OPT("--depth-reps", depth_reps)
@@ -120,6 +127,7 @@ static int parse(int argc, char **argv, bench_config *c) {
         if (strcmp(a, "--mesh-dir") == 0 && v) { c->mesh_dir = v; ++i; continue; }
         if (strcmp(a, "--out") == 0 && v) { c->out_dir = v; ++i; continue; }
         if (strcmp(a, "--raw") == 0 && v) { c->raw_path = v; ++i; continue; }
+        if (strcmp(a, "--coal-child") == 0 && v) { c->coal_child = v; ++i; continue; }
         if (strcmp(a, "--quick") == 0) {
             c->quick = 1;
             c->pairs = 10;
@@ -132,6 +140,7 @@ static int parse(int argc, char **argv, bench_config *c) {
             c->wp_reps = 3;
             c->ccd_reps = 5;
             c->coal_reps = 10;
+            c->coal_processes = 1;
             c->stress_pairs = 2;
             c->stress_poses = 2;
             c->depth_reps = 3;
@@ -148,7 +157,7 @@ static int parse(int argc, char **argv, bench_config *c) {
     }
     if (c->pairs < 1 || c->poses < 1 || c->reps < 1 || c->slow_reps < 1 ||
         c->max_iterations < 1 || c->slow_max_iterations < 1 || c->max_meshes < 1 ||
-        c->stress_poses < 1) {
+        c->stress_poses < 1 || c->coal_processes < 1) {
         fprintf(stderr, "agjk-bench: sizes must be >= 1\n");
         return -1;
     }
@@ -371,6 +380,22 @@ int main(int argc, char **argv) {
                 set.max_target_deviation, rep.seconds[0]);
     }
 
+    if (cfg.coal_child) {
+        /* One of the processes of coal_bench_repeat: the comparisons only. */
+        coal_bench_data *d[1 + 16];
+        int n = 0, rc;
+        coal = coal_bench_run(&cfg, &set);
+        stress = bench_stress_run(&cfg);
+        if (coal) d[n++] = coal;
+        n += bench_stress_coal_data(stress, d + n, 16);
+        rc = coal_bench_save_times(cfg.coal_child, d, n) == 0 ? 0 : 2;
+        coal_bench_free(coal);
+        bench_stress_free(stress);
+        bench_set_free(&set);
+        bench_free_meshes(&meshes);
+        return rc;
+    }
+
     recs = calloc((size_t)set.problem_count * BM_COUNT * 2 + 1, sizeof *recs);
     if (!recs) return 2;
     fprintf(stderr, "agjk-bench: distance and Boolean queries, R = %d (FW, NESMINO: R = %d)\n",
@@ -411,6 +436,13 @@ int main(int argc, char **argv) {
 
     coal = coal_bench_run(&cfg, &set);
     stress = bench_stress_run(&cfg);
+    if (cfg.coal_processes > 1 && coal) {
+        coal_bench_data *d[1 + 16];
+        int n = 1;
+        d[0] = coal;
+        n += bench_stress_coal_data(stress, d + n, 16);
+        coal_bench_repeat(d, n, argc, argv, cfg.out_dir, cfg.coal_processes);
+    }
     if (cfg.depth_reps > 0 && bench_ccd_check() == 0) {
         depth_bench_options dopt = {cfg.depth_reps, cfg.max_iterations, cfg.tolerance, 10.0,
                                     cfg.out_dir};

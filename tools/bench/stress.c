@@ -174,6 +174,21 @@ bench_stress *bench_stress_run(const bench_config *cfg) {
     return s;
 }
 
+/* The processes the times are medians of (coal_bench_repeat). */
+static int stress_processes(const bench_stress *s) {
+    int k;
+    for (k = 0; k < STRESS_COUNT; ++k)
+        if (s->data[k]) return s->data[k]->processes;
+    return 1;
+}
+
+int bench_stress_coal_data(bench_stress *s, coal_bench_data **out, int cap) {
+    int k, n = 0;
+    for (k = 0; s && k < STRESS_COUNT && n < cap; ++k)
+        if (s->data[k]) out[n++] = s->data[k];
+    return n;
+}
+
 void bench_stress_free(bench_stress *s) {
     int k;
     if (!s) return;
@@ -349,7 +364,8 @@ int bench_stress_write(const bench_config *cfg, const bench_stress *s) {
     b2 = malloc(sizeof(double) * ((size_t)max_count + 8));
     if (!b0 || !b1 || !b2) abort();
     fprintf(md, "The comparison above (Coal %s, same methods, cap of %d iterations, initial "
-                "guess, clock; R = %d runs per problem, agjk's right before Coal's) on problems "
+                "guess, clock; R = %d runs per problem, agjk's right before Coal's; median of "
+                "%d processes) on problems "
                 "outside the protocol's comfortable range, %d pairs x %d poses per set, each "
                 "judged by the certified reference: **stiff ellipsoids**, needles (two radii "
                 "x 1e-3) and pancakes (one radius x 1e-3); **flat boxes**, one half extent x "
@@ -361,7 +377,8 @@ int bench_stress_write(const bench_config *cfg, const bench_stress *s) {
                 "-1e-9 (overlapping) and 1e-9, 1e-6 (close). The others use the protocol's 12 "
                 "signed distances. Tolerance %g (absolute duality gap) unless scaled. "
                 "%d problems x 4 methods x 2 modes; generated in %.1f s, timed in %.1f s.\n\n",
-            coal_adapter_version(), cfg->max_iterations, s->reps, s->pairs, s->poses,
+            coal_adapter_version(), cfg->max_iterations, s->reps, stress_processes(s), s->pairs,
+            s->poses,
             s->tolerance, s->tolerance, problems, s->seconds_generate, s->seconds_run);
     outs[0] = md;
     outs[1] = stdout;
