@@ -769,9 +769,6 @@ void agjk__solve(agjk__minkowski *md, const agjk__solve_input *in, agjk__solve_o
     sv.md = md;
     sv.in = in;
     sv.count = 0;
-    sv.keep_a = in->keep_points;
-    sv.b_from_a = in->method != AGJK_METHOD_FRANK_WOLFE;
-    sv.keep_b = in->keep_points && (in->want_simplex || !sv.b_from_a);
 
     out->outcome = AGJK__ITERATION_CAP;
     out->gap = INFINITY;
@@ -799,6 +796,9 @@ void agjk__solve(agjk__minkowski *md, const agjk__solve_input *in, agjk__solve_o
 
     sv.lambda[0] = 1.0;
     sv.lambda[1] = sv.lambda[2] = sv.lambda[3] = 0.0;
+    sv.keep_a = in->keep_points;
+    sv.b_from_a = in->method != AGJK_METHOD_FRANK_WOLFE;
+    sv.keep_b = in->keep_points && (in->want_simplex || !sv.b_from_a);
     int have_x = 0;      /* x is a point of D (after the first projection) */
     int warm = 0, warm_enclosed = 0; /* cached points in the simplex (cache.c) */
     /* Warm-started points carry a few more ulps from their frame changes:
