@@ -22,6 +22,7 @@
 
 #include "coal_adapter.h"
 #include "coal_bench.h"
+#include "ccd_adapter.h"
 #include "hull_support.h"
 #include "problems.h"
 #include "solve.h"
@@ -109,7 +110,9 @@ static void coal_desc_init(coal_query_desc *d, const agjk_query *q) {
 /* Timing mode (not for callgrind): each problem run REPS times in a row by
  * agjk, then by Coal, alternating in rounds; per problem the fastest round's
  * mean. A quick same-run comparison while working on the kernel; the
- * benchmark (make bench) is the reference. */
+ * benchmark (make bench) is the reference. Back-to-back runs measure
+ * throughput, where the benchmark times each run alone (closer to latency):
+ * short queries can differ a lot between the two (README, libccd section). */
 #define TIME_MAX 4096
 #define TIME_ROUNDS 5
 typedef struct time_stats {
@@ -134,11 +137,32 @@ static int run_agjk(const void *q) {
 }
 static int run_coal(const void *q) { return measured_coal((void *)(uintptr_t)q); }
 
+static int run_mpr(const void *q) {
+    return bench_ccd_run((bench_ccd_query *)(uintptr_t)q, CCD_MPR);
+}
+
+/* AGJK_WORK_VS=mpr in the environment: the other library is libccd's MPR
+ * (Boolean answers; issue 8's one-support target), not Coal. */
+static int versus_mpr(void) {
+    const char *v = getenv("AGJK_WORK_VS");
+    return v && strcmp(v, "mpr") == 0;
+}
+
 static void time_one(const bench_set *set, const bench_problem *p, const workload *w, int reps,
                      time_stats *st) {
     agjk_query q;
     coal_query_desc d;
     agjk_query_init(&q, set, p, w);
+    if (versus_mpr()) {
+        static bench_ccd_query cq; /* points into itself: set up in place */
+        bench_ccd_prepare(&cq, set, p, 1000);
+        if (st->count < TIME_MAX) {
+            st->agjk_ns[st->count] = best_round(run_agjk, &q, reps);
+            st->coal_ns[st->count] = best_round(run_mpr, &cq, reps);
+            ++st->count;
+        }
+        return;
+    }
     coal_desc_init(&d, &q);
     void *sa = coal_bench_shape(q.a), *sb = coal_bench_shape(q.b);
     void *cq = coal_adapter_query_new(sa, sb, &d);
@@ -166,8 +190,10 @@ static void time_report(time_stats *st, const char *name) {
         sc += st->coal_ns[i];
     }
     qsort(ratio, (size_t)st->count, sizeof ratio[0], cmp_double);
-    printf("%s: %d problems, mean ns agjk %.1f coal %.1f, median ratio agjk/coal %.3f\n", name,
-           st->count, sa / st->count, sc / st->count, st->count ? ratio[st->count / 2] : 0.0);
+    const char *other = versus_mpr() ? "mpr" : "coal";
+    printf("%s: %d problems, mean ns agjk %.1f %s %.1f, median ratio agjk/%s %.3f\n", name,
+           st->count, sa / st->count, other, sc / st->count, other,
+           st->count ? ratio[st->count / 2] : 0.0);
 }
 
 int main(int argc, char **argv) {
@@ -180,6 +206,9 @@ int main(int argc, char **argv) {
                      strcmp(argv[1], "time") != 0)) {
         fprintf(stderr, "usage: agjk-callgrind-work agjk|coal WORKLOAD [PROBLEMS]\n"
                         "       agjk-callgrind-work time WORKLOAD [PROBLEMS [REPS]]\n"
+                        "environment: AGJK_WORK_METHOD=nesterov|polyak|adaptive, "
+                        "AGJK_WORK_WITNESS=1, AGJK_WORK_VS=mpr (time: libccd's MPR "
+                        "instead of Coal)\n"
                         "WORKLOAD: ellipsoids-close boxes-close hulls-close ellipsoids-overlapping "
                         "ellipsoids-distant boxes-distant hulls-distant\n");
         return 2;
