@@ -490,15 +490,25 @@ static AGJK__NOINLINE AGJK__COLD agjk_vec3 nearest_edge_point(const solver *sv, 
     return p;
 }
 
-static agjk_vec3 member_point(const solver *sv) {
+/* sum lambda_i w_i over the active set. */
+static agjk_vec3 active_combination(const solver *sv) {
     agjk_vec3 p = v3(0.0, 0.0, 0.0);
     for (int i = 0; i < sv->count; ++i) p = v3_add(p, v3_scale(sv->w[i], sv->lambda[i]));
+    return p;
+}
+
+/* The member point from p = active_combination(sv). */
+static agjk_vec3 member_point_from(const solver *sv, agjk_vec3 p) {
     /* p is a member either way; the edges are searched only when p is longer
      * than x by more than about the rounding: (||x|| + 2 noise)^2 bounded
      * with ||x|| <= sqrt(3) max |x_i| (no square root at the end of every
      * query). */
     double n = sv->md->noise, reach2 = sv->x2 + 4.0 * n * (1.7320508075688772 * v3_maxabs(sv->x) + n);
     return v3_norm2(p) <= reach2 ? p : nearest_edge_point(sv, p);
+}
+
+static agjk_vec3 member_point(const solver *sv) {
+    return member_point_from(sv, active_combination(sv));
 }
 
 /* Adds s to the active set and projects the origin onto its hull, keeping only
@@ -714,7 +724,11 @@ static void finish(const solver *sv, agjk__solve_output *out) {
     const agjk__solve_input *in = sv->in;
     out->x = sv->x;
     /* (An overlap has no upper bound to certify: no member point needed.) */
-    out->x_member = sv->count > 0 && out->outcome != AGJK__INTERSECTING ? member_point(sv) : sv->x;
+    int member = sv->count > 0 && out->outcome != AGJK__INTERSECTING;
+    int b_from_a = in->want_witness && sv->b_from_a;
+    /* sum lambda_i w_i, for the member point and B's witness point alike */
+    agjk_vec3 p = member || b_from_a ? active_combination(sv) : v3(0.0, 0.0, 0.0);
+    out->x_member = member ? member_point_from(sv, p) : sv->x;
     out->noise = sv->md->noise;
     agjk_vec3 a = v3(0.0, 0.0, 0.0), b = v3(0.0, 0.0, 0.0);
     if (in->want_witness) {
@@ -722,15 +736,11 @@ static void finish(const solver *sv, agjk__solve_output *out) {
          * rounding of w_i = a_i - b_i; taken so whether or not b_i were
          * kept, so that a warm-started query that ends where a cold one
          * does answers the same bits. */
-        agjk_vec3 p = v3(0.0, 0.0, 0.0);
         for (int i = 0; i < sv->count; ++i) {
             a = v3_add(a, v3_scale(sv->a[i], sv->lambda[i]));
-            if (sv->b_from_a)
-                p = v3_add(p, v3_scale(sv->w[i], sv->lambda[i]));
-            else
-                b = v3_add(b, v3_scale(sv->b[i], sv->lambda[i]));
+            if (!b_from_a) b = v3_add(b, v3_scale(sv->b[i], sv->lambda[i]));
         }
-        if (sv->b_from_a) b = v3_sub(a, p);
+        if (b_from_a) b = v3_sub(a, p);
     }
     out->a = a;
     out->b = b;
