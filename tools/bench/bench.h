@@ -18,8 +18,8 @@ typedef struct bench_config {
     int reps, slow_reps, slow_pairs, slow_max_iterations, max_iterations;
     int wp_pairs, wp_reps, ccd_reps;
     int coal_reps;             /* agjk vs Coal (coal_bench.h); 0 disables it */
-    int coal_processes;        /* ... run in this many processes (coal_bench_repeat) */
-    const char *coal_child;    /* this process is one of them: save the times here */
+    int processes;             /* timed comparisons run in this many processes (repeat.h) */
+    const char *child;         /* this process is one of them: save the times here */
     int stress_pairs, stress_poses; /* agjk vs Coal on the stress set (stress.h); 0: off */
     int depth_reps;            /* penetration-depth comparison (depth_bench.h); 0 disables */
     int coherent_pairs, coherent_steps, coherent_reps; /* coherent.c; pairs 0: off */
@@ -44,6 +44,7 @@ typedef struct bench_report {
     const ccd_bench_record *ccd;
     const unsigned char *ccd_outcome;
     int ccd_count;             /* 0: no libccd part */
+    int ccd_processes;         /* its times are medians over this many processes */
     double seconds[6];         /* phase wall times */
     double clock_overhead_ns;  /* cost of an empty timed region (included in all times) */
     const char *mesh_note;

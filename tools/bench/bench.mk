@@ -7,7 +7,7 @@
 #   tools/fetch-meshes.sh      downloads the pybullet meshes; make bench then uses them
 
 BENCH_LIB_SRCS := rng.c problems.c nesmino.c solve.c evaluate.c stats.c guard.c \
-                  ccd_adapter.c ccd_bench.c mesh_io.c report.c
+                  ccd_adapter.c ccd_bench.c mesh_io.c report.c repeat.c
 BENCH_LIB_OBJS := $(BENCH_LIB_SRCS:%.c=$(OUT)/tools/bench/%.o)
 # The adaptive method's tables (support calls, coherent motion), linked with main.c.
 BENCH_ADAPTIVE_OBJS := $(OUT)/tools/bench/coherent.o $(OUT)/tools/bench/calls.o

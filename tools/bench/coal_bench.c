@@ -2,10 +2,8 @@
 #include "coal_bench.h"
 
 #include <math.h>
-#include <spawn.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/wait.h>
 
 #include "coal_adapter.h"
 #include "guard.h"
@@ -157,112 +155,12 @@ coal_bench_data *coal_bench_run_set(const bench_config *cfg, const bench_set *se
     return d;
 }
 
-/* The file of coal_bench_save_times: per data set its record count, then
- * agjk's and Coal's time of each record (doubles, this machine's layout: the
- * file never leaves it). */
-int coal_bench_save_times(const char *path, coal_bench_data *const *d, int n) {
-    FILE *f = fopen(path, "wb");
-    int i, j, ok;
-    if (!f) return -1;
-    ok = 1;
-    for (i = 0; i < n && ok; ++i) {
-        ok = fwrite(&d[i]->count, sizeof d[i]->count, 1, f) == 1;
-        for (j = 0; j < d[i]->count && ok; ++j) {
-            double t[2];
-            t[0] = d[i]->recs[j].agjk.run.time_ns;
-            t[1] = d[i]->recs[j].coal.run.time_ns;
-            ok = fwrite(t, sizeof t, 1, f) == 1;
-        }
-    }
-    return fclose(f) == 0 && ok ? 0 : -1;
-}
-
-/* Reads a child's times into times[p][...] (two per record, data sets one
- * after the other); 0 when its record counts match this process's. */
-static int load_times(const char *path, coal_bench_data *const *d, int n, double *times) {
-    FILE *f = fopen(path, "rb");
-    int i, ok = f != NULL;
-    for (i = 0; i < n && ok; ++i) {
-        int count;
-        ok = fread(&count, sizeof count, 1, f) == 1 && count == d[i]->count &&
-             fread(times, sizeof(double), 2 * (size_t)count, f) == 2 * (size_t)count;
-        times += 2 * (size_t)count;
-    }
-    if (f) fclose(f);
-    return ok ? 0 : -1;
-}
-
-static double median_of(double *v, int k) {
-    int i, j;
-    for (i = 1; i < k; ++i)
-        for (j = i; j > 0 && v[j - 1] > v[j]; --j) {
-            double t = v[j];
-            v[j] = v[j - 1];
-            v[j - 1] = t;
-        }
-    return k % 2 ? v[k / 2] : 0.5 * (v[k / 2 - 1] + v[k / 2]);
-}
-
-#define REPEAT_MAX 9
-
-extern char **environ; /* POSIX: the environment the children inherit */
-
-int coal_bench_repeat(coal_bench_data *const *d, int n, int argc, char **argv, const char *dir,
-                      int k) {
-    size_t total = 0, at;
-    double *times[REPEAT_MAX];
-    int used = 1, p, i, j;
-    char **child_argv;
-    static char path[1024];
-    if (k > REPEAT_MAX) k = REPEAT_MAX;
-    for (i = 0; i < n; ++i) total += 2 * (size_t)d[i]->count;
-    child_argv = calloc((size_t)argc + 3, sizeof *child_argv);
-    if (!child_argv) abort();
-    for (i = 0; i < argc; ++i) child_argv[i] = argv[i];
-    snprintf(path, sizeof path, "%s/coal-times.bin", dir);
-    child_argv[argc] = "--coal-child";
-    child_argv[argc + 1] = path;
-    for (p = 1; p < k; ++p) {
-        pid_t pid;
-        int status = 0;
-        fprintf(stderr, "agjk-bench: the Coal comparisons again in a fresh process (%d of %d)\n",
-                p + 1, k);
-        remove(path);
-        if (posix_spawn(&pid, argv[0], NULL, NULL, child_argv, environ) != 0 ||
-            waitpid(pid, &status, 0) != pid || !WIFEXITED(status) || WEXITSTATUS(status) != 0) {
-            fprintf(stderr, "  that process failed; its times are left out\n");
-            continue;
-        }
-        times[used] = malloc(sizeof(double) * (total + 1));
-        if (!times[used]) abort();
-        if (load_times(path, d, n, times[used]) != 0) {
-            fprintf(stderr, "  its records differ from this process's; left out\n");
-            free(times[used]);
-            continue;
-        }
-        ++used;
-    }
-    remove(path);
-    free(child_argv);
-    /* This process's own times, then each record's median. */
-    at = 0;
-    for (i = 0; i < n; ++i) {
-        for (j = 0; j < d[i]->count; ++j, at += 2) {
-            double va[REPEAT_MAX], vc[REPEAT_MAX];
-            coal_bench_record *r = &d[i]->recs[j];
-            va[0] = r->agjk.run.time_ns;
-            vc[0] = r->coal.run.time_ns;
-            for (p = 1; p < used; ++p) {
-                va[p] = times[p][at];
-                vc[p] = times[p][at + 1];
-            }
-            r->agjk.run.time_ns = median_of(va, used);
-            r->coal.run.time_ns = median_of(vc, used);
-        }
-        d[i]->processes = used;
-    }
-    for (p = 1; p < used; ++p) free(times[p]);
-    return used;
+int coal_bench_times(coal_bench_data *d, bench_times out[2]) {
+    out[0].first = &d->recs[0].agjk.run.time_ns;
+    out[1].first = &d->recs[0].coal.run.time_ns;
+    out[0].count = out[1].count = d->count;
+    out[0].stride = out[1].stride = sizeof d->recs[0];
+    return d->count > 0 ? 2 : 0;
 }
 
 void coal_bench_free(coal_bench_data *d) {
@@ -541,7 +439,7 @@ int coal_bench_write(const bench_report *r, const coal_bench_data *d) {
                 "agjk_collide (distance only, no witness points) for agjk; R = %d runs per "
                 "problem, agjk's right before Coal's; the whole comparison run in %d "
                 "process%s, each problem's times the median over them (see "
-                "coal_bench_repeat). %d problems x 4 methods x 2 modes, "
+                "tools/bench/repeat.h). %d problems x 4 methods x 2 modes, "
                 "%d skipped, %.0f s per process.\n\n",
             d->version, r->cfg->tolerance, r->cfg->max_iterations, r->cfg->coal_reps,
             d->processes, d->processes == 1 ? "" : "es", d->count / 8, d->skipped_problems,

@@ -8,6 +8,7 @@
 #define AGJK_BENCH_COAL_BENCH_H
 
 #include "bench.h"
+#include "repeat.h"
 
 /* One problem x method x mode, answered and timed by both libraries. */
 typedef struct coal_bench_record {
@@ -22,7 +23,7 @@ typedef struct coal_bench_record {
 typedef struct coal_bench_data {
     coal_bench_record *recs;
     int count;
-    int processes;             /* the times are medians over this many processes */
+    int processes;             /* the times are medians over this many processes (repeat.h) */
     int skipped_problems;      /* a shape without a Coal counterpart (no solid hull) */
     int failed_runs;           /* Coal threw */
     double seconds;
@@ -45,22 +46,10 @@ coal_bench_data *coal_bench_run_set(const bench_config *cfg, const bench_set *se
                                     const char *label);
 void coal_bench_free(coal_bench_data *d);
 
-/* The comparison repeated in fresh processes. A process can start in a
- * state where one library is slower throughout: about one run in ten on the
- * development machine, Coal then taking 2200 ns instead of 1380 on close
- * ellipsoids, which moved every cell of that run by a third. Each record's
- * times, the median over a few processes, are immune to one such process.
- *
- * coal_bench_save_times writes the times (agjk's and Coal's) of the records
- * of d[0..n-1] to path (0, or -1 when it cannot). coal_bench_repeat runs
- * argv[0] with its arguments argv[1..argc-1] and "--coal-child FILE" k - 1
- * times, one after the other (a child regenerates the same problems, runs
- * the comparisons and saves their times), and replaces each record's times
- * by the median over this process and the children whose records matched;
- * returns that number of processes (also in each d[i]->processes). */
-int coal_bench_save_times(const char *path, coal_bench_data *const *d, int n);
-int coal_bench_repeat(coal_bench_data *const *d, int n, int argc, char **argv,
-                      const char *dir, int k);
+/* The columns of agjk's and Coal's times of d's records (repeat.h), for the
+ * comparison repeated in fresh processes; returns 2 (0 when d is empty, with
+ * nothing to repeat). */
+int coal_bench_times(coal_bench_data *d, bench_times out[2]);
 
 /* The methods both libraries have (bench_method values) and their short names. */
 extern const int coal_bench_methods[4];

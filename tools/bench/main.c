@@ -3,9 +3,11 @@
  * Detection Accelerated: An Optimization Perspective" (RSS 2022), adds a
  * work-precision diagram and a Boolean-query comparison with libccd.
  * Run with --help for the options; `make bench` runs the default size. */
+#include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 #include "bench.h"
 #include "ccd_adapter.h"
@@ -42,10 +44,11 @@ static void usage(FILE *f) {
         "                    huge, far and nearly touching shapes (default 20; 0 disables it;\n"
         "                    runs with the Coal comparison, R = --coal-reps)\n"
         "  --stress-poses M  poses per pair of the stress set (default 5)\n"
-        "  --coal-processes K  run the agjk/Coal comparisons (protocol and stress set) in K\n"
-        "                    processes, each problem's times the median over them (default\n"
-        "                    3; 1 with --quick): one process can start slow for a library\n"
-        "  --coal-child FILE (internal) one of those processes: run only the comparisons\n"
+        "  --processes K     run the timed comparisons (agjk/libccd, agjk/Coal on the\n"
+        "                    protocol and the stress set) in K processes, each problem's\n"
+        "                    times the median over them (default 3; 1 with --quick): one\n"
+        "                    process can start slow for a library\n"
+        "  --child FILE      (internal) one of those processes: run only the comparisons\n"
         "                    and save their times to FILE\n"
         "  --depth-reps R    repetitions in the penetration-depth comparison with libccd\n"
         "                    (default 20; 0 disables it)\n"
@@ -83,7 +86,7 @@ static int parse(int argc, char **argv, bench_config *c) {
     c->wp_reps = 10;
     c->ccd_reps = 50;
     c->coal_reps = 100;
-    c->coal_processes = 3;
+    c->processes = 3;
     c->stress_pairs = 20;
     c->stress_poses = 5;
     c->depth_reps = 20;
@@ -109,7 +112,7 @@ static int parse(int argc, char **argv, bench_config *c) {
         INT_OPT("--wp-reps", wp_reps)
         INT_OPT("--ccd-reps", ccd_reps)
         INT_OPT("--coal-reps", coal_reps)
-        INT_OPT("--coal-processes", coal_processes)
+        INT_OPT("--processes", processes)
         INT_OPT("--stress-pairs", stress_pairs)
         INT_OPT("--stress-poses", stress_poses)
         INT_OPT("--depth-reps", depth_reps)
@@ -127,7 +130,7 @@ static int parse(int argc, char **argv, bench_config *c) {
         if (strcmp(a, "--mesh-dir") == 0 && v) { c->mesh_dir = v; ++i; continue; }
         if (strcmp(a, "--out") == 0 && v) { c->out_dir = v; ++i; continue; }
         if (strcmp(a, "--raw") == 0 && v) { c->raw_path = v; ++i; continue; }
-        if (strcmp(a, "--coal-child") == 0 && v) { c->coal_child = v; ++i; continue; }
+        if (strcmp(a, "--child") == 0 && v) { c->child = v; ++i; continue; }
         if (strcmp(a, "--quick") == 0) {
             c->quick = 1;
             c->pairs = 10;
@@ -140,7 +143,7 @@ static int parse(int argc, char **argv, bench_config *c) {
             c->wp_reps = 3;
             c->ccd_reps = 5;
             c->coal_reps = 10;
-            c->coal_processes = 1;
+            c->processes = 1;
             c->stress_pairs = 2;
             c->stress_poses = 2;
             c->depth_reps = 3;
@@ -157,7 +160,7 @@ static int parse(int argc, char **argv, bench_config *c) {
     }
     if (c->pairs < 1 || c->poses < 1 || c->reps < 1 || c->slow_reps < 1 ||
         c->max_iterations < 1 || c->slow_max_iterations < 1 || c->max_meshes < 1 ||
-        c->stress_poses < 1 || c->coal_processes < 1) {
+        c->stress_poses < 1 || c->processes < 1) {
         fprintf(stderr, "agjk-bench: sizes must be >= 1\n");
         return -1;
     }
@@ -297,6 +300,57 @@ static void write_raw(const char *path, const bench_set *set, const bench_record
     fclose(f);
 }
 
+/* The Boolean comparison with libccd, when asked for (cfg->ccd_reps > 0) and
+ * libccd answers: *recs and *outcome allocated and filled (NULL otherwise),
+ * its wall time in *seconds. Returns -1 when out of memory. */
+static int run_ccd(const bench_config *cfg, const bench_set *set, ccd_bench_record **recs,
+                   unsigned char **outcome, double *seconds) {
+    ccd_bench_options co;
+    double t0;
+    int bad;
+    *recs = NULL;
+    *outcome = NULL;
+    if (cfg->ccd_reps <= 0 || bench_ccd_check() != 0) return 0;
+    *recs = calloc((size_t)set->problem_count + 1, sizeof **recs);
+    *outcome = calloc((size_t)set->problem_count + 1, 1);
+    if (!*recs || !*outcome) return -1;
+    co.reps = cfg->ccd_reps;
+    co.max_iterations = cfg->max_iterations;
+    co.timeout_seconds = 10.0;
+    co.columns = 0;
+    co.tolerance = cfg->tolerance;
+    fprintf(stderr, "agjk-bench: Boolean queries, agjk vs libccd (R = %d, each case "
+                    "guarded by a 10 s watchdog)\n", cfg->ccd_reps);
+    t0 = bench_now_ns();
+    bad = ccd_bench_run(set, &co, *recs, *outcome);
+    *seconds = (bench_now_ns() - t0) * 1e-9;
+    fprintf(stderr, "  %d cases, %d hung or crashed, %.1f s\n", set->problem_count, bad, *seconds);
+    return 0;
+}
+
+/* libccd's four columns, then agjk's and Coal's of the protocol and of each
+ * stress family: at most this many. */
+#define COMPARISON_COLUMNS_MAX (CB_COUNT + 2 * (1 + 16))
+
+/* The columns of times of the comparisons that ran (ccd NULL, coal NULL,
+ * stress NULL: not run), in a fixed order that the parent and its children
+ * share (bench_repeat). Returns their number. */
+static int comparison_times(bench_times *t, ccd_bench_record *ccd, int ccd_count,
+                            coal_bench_data *coal, bench_stress *stress) {
+    coal_bench_data *d[1 + 16];
+    int n = 0, m = 0, k;
+    if (ccd && ccd_count > 0)
+        for (k = 0; k < CB_COUNT; ++k, ++n) {
+            t[n].first = &ccd[0].time_ns[k];
+            t[n].count = ccd_count;
+            t[n].stride = sizeof ccd[0];
+        }
+    if (coal) d[m++] = coal;
+    m += bench_stress_coal_data(stress, d + m, 16);
+    for (k = 0; k < m; ++k) n += coal_bench_times(d[k], t + n);
+    return n;
+}
+
 int main(int argc, char **argv) {
     bench_config cfg;
     bench_set set;
@@ -314,6 +368,11 @@ int main(int argc, char **argv) {
     char mesh_note[256] = "";
 
     if (parse(argc, argv, &cfg) != 0) return 2;
+    /* The output folder (one level), before any phase writes into it. */
+    if (mkdir(cfg.out_dir, 0777) != 0 && errno != EEXIST) {
+        fprintf(stderr, "agjk-bench: cannot create %s: %s\n", cfg.out_dir, strerror(errno));
+        return 2;
+    }
     {
         size_t len = 0;
         int i;
@@ -380,15 +439,19 @@ int main(int argc, char **argv) {
                 set.max_target_deviation, rep.seconds[0]);
     }
 
-    if (cfg.coal_child) {
-        /* One of the processes of coal_bench_repeat: the comparisons only. */
-        coal_bench_data *d[1 + 16];
-        int n = 0, rc;
+    if (cfg.child) {
+        /* One of the processes of bench_repeat: the timed comparisons only,
+         * in the parent's order, their times saved for it. */
+        bench_times t[COMPARISON_COLUMNS_MAX];
+        int n, rc;
+        double seconds;
+        if (run_ccd(&cfg, &set, &ccd_recs, &ccd_outcome, &seconds) != 0) return 2;
         coal = coal_bench_run(&cfg, &set);
         stress = bench_stress_run(&cfg);
-        if (coal) d[n++] = coal;
-        n += bench_stress_coal_data(stress, d + n, 16);
-        rc = coal_bench_save_times(cfg.coal_child, d, n) == 0 ? 0 : 2;
+        n = comparison_times(t, ccd_recs, ccd_recs ? set.problem_count : 0, coal, stress);
+        rc = bench_times_save(cfg.child, t, n) == 0 ? 0 : 2;
+        free(ccd_recs);
+        free(ccd_outcome);
         coal_bench_free(coal);
         bench_stress_free(stress);
         bench_set_free(&set);
@@ -411,37 +474,27 @@ int main(int argc, char **argv) {
         rep.seconds[2] = (bench_now_ns() - t0) * 1e-9;
     }
 
-    if (cfg.ccd_reps > 0 && bench_ccd_check() == 0) {
-        ccd_bench_options co;
-        int bad;
-        ccd_recs = calloc((size_t)set.problem_count + 1, sizeof *ccd_recs);
-        ccd_outcome = calloc((size_t)set.problem_count + 1, 1);
-        if (!ccd_recs || !ccd_outcome) return 2;
-        co.reps = cfg.ccd_reps;
-        co.max_iterations = cfg.max_iterations;
-        co.timeout_seconds = 10.0;
-        co.columns = 0;
-        co.tolerance = cfg.tolerance;
-        fprintf(stderr, "agjk-bench: Boolean queries, agjk vs libccd (R = %d, each case "
-                        "guarded by a 10 s watchdog)\n", cfg.ccd_reps);
-        t0 = bench_now_ns();
-        bad = ccd_bench_run(&set, &co, ccd_recs, ccd_outcome);
-        rep.seconds[3] = (bench_now_ns() - t0) * 1e-9;
-        fprintf(stderr, "  %d cases, %d hung or crashed, %.1f s\n", set.problem_count, bad,
-                rep.seconds[3]);
+    if (run_ccd(&cfg, &set, &ccd_recs, &ccd_outcome, &rep.seconds[3]) != 0) return 2;
+    if (ccd_recs) {
         rep.ccd = ccd_recs;
         rep.ccd_outcome = ccd_outcome;
         rep.ccd_count = set.problem_count;
+        rep.ccd_processes = 1;
     }
 
     coal = coal_bench_run(&cfg, &set);
     stress = bench_stress_run(&cfg);
-    if (cfg.coal_processes > 1 && coal) {
-        coal_bench_data *d[1 + 16];
-        int n = 1;
-        d[0] = coal;
-        n += bench_stress_coal_data(stress, d + n, 16);
-        coal_bench_repeat(d, n, argc, argv, cfg.out_dir, cfg.coal_processes);
+    if (cfg.processes > 1) {
+        bench_times t[COMPARISON_COLUMNS_MAX];
+        int n = comparison_times(t, ccd_recs, ccd_recs ? set.problem_count : 0, coal, stress);
+        if (n > 0) {
+            coal_bench_data *d[1 + 16];
+            int k, m = 0, used = bench_repeat(t, n, argc, argv, cfg.out_dir, cfg.processes);
+            if (coal) d[m++] = coal;
+            m += bench_stress_coal_data(stress, d + m, 16);
+            for (k = 0; k < m; ++k) d[k]->processes = used;
+            if (ccd_recs) rep.ccd_processes = used;
+        }
     }
     if (cfg.depth_reps > 0 && bench_ccd_check() == 0) {
         depth_bench_options dopt = {cfg.depth_reps, cfg.max_iterations, cfg.tolerance, 10.0,

@@ -404,10 +404,12 @@ static void write_ccd(const bench_report *r, FILE *md) {
             free(rg);
         }
     fprintf(md, "\nTimes: median over problems of the per-problem mean of the fastest 90%% of "
-                "R = %d runs; ratios: median of per-problem ratios (< 1: agjk faster). "
-                "\"wrong\": a verdict the certified reference refutes (agjk's "
+                "R = %d runs (each library's R runs of a problem in a row), the whole "
+                "comparison run in %d process%s, each problem's times the median over them "
+                "(see tools/bench/repeat.h); ratios: median of per-problem ratios (< 1: agjk "
+                "faster). \"wrong\": a verdict the certified reference refutes (agjk's "
                 "contact-within-tolerance answers are not verdicts and are not counted).\n\n",
-            r->cfg->ccd_reps);
+            r->cfg->ccd_reps, r->ccd_processes, r->ccd_processes == 1 ? "" : "es");
     fclose(csv);
 }
 

@@ -174,7 +174,7 @@ bench_stress *bench_stress_run(const bench_config *cfg) {
     return s;
 }
 
-/* The processes the times are medians of (coal_bench_repeat). */
+/* The processes the times are medians of (repeat.h). */
 static int stress_processes(const bench_stress *s) {
     int k;
     for (k = 0; k < STRESS_COUNT; ++k)

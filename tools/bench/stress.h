@@ -29,7 +29,7 @@ bench_stress *bench_stress_run(const bench_config *cfg);
  * and the summary on stdout. Returns 0 or -1. */
 int bench_stress_write(const bench_config *cfg, const bench_stress *s);
 
-/* The Coal comparisons of the stress set's families (coal_bench_repeat), up
+/* The Coal comparisons of the stress set's families (repeated: repeat.h), up
  * to cap of them; returns their number. */
 struct coal_bench_data;
 int bench_stress_coal_data(bench_stress *s, struct coal_bench_data **out, int cap);
