@@ -11,7 +11,9 @@
  *
  * WORKLOAD: ellipsoids-close, boxes-close, hulls-close, ellipsoids-overlapping
  * (GJK, distance),
- * ellipsoids-distant, boxes-distant, hulls-distant (GJK, Boolean); hulls: 141
+ * ellipsoids-distant, boxes-distant, hulls-distant (GJK, Boolean); also
+ * boxes-overlapping (distance), boxes-overlapping-boolean, boxes-close-boolean,
+ * ellipsoids-close-boolean (for timing other cells); hulls: 141
  * points on an ellipsoid, hill climbing on the Qhull hull's vertex graph (agjk)
  * and Coal's own graph of the same hull, as in the benchmark. stdout: one line per query, "query I
  * support_calls N verdict V", in dump order. */
@@ -41,6 +43,11 @@ static const workload workloads[] = {
     {"ellipsoids-distant", BENCH_ELLIPSOIDS, BENCH_DISTANT, BENCH_BOOLEAN, 0},
     {"boxes-distant", BENCH_BOXES, BENCH_DISTANT, BENCH_BOOLEAN, 0},
     {"hulls-distant", BENCH_HULLS, BENCH_DISTANT, BENCH_BOOLEAN, 141},
+    /* Not in callgrind.sh's table; for same-run timing of other cells. */
+    {"boxes-overlapping", BENCH_BOXES, BENCH_OVERLAPPING, BENCH_DISTANCE, 0},
+    {"boxes-overlapping-boolean", BENCH_BOXES, BENCH_OVERLAPPING, BENCH_BOOLEAN, 0},
+    {"boxes-close-boolean", BENCH_BOXES, BENCH_CLOSE, BENCH_BOOLEAN, 0},
+    {"ellipsoids-close-boolean", BENCH_ELLIPSOIDS, BENCH_CLOSE, BENCH_BOOLEAN, 0},
 };
 
 typedef struct agjk_query {
@@ -210,7 +217,9 @@ int main(int argc, char **argv) {
                         "AGJK_WORK_WITNESS=1, AGJK_WORK_VS=mpr (time: libccd's MPR "
                         "instead of Coal)\n"
                         "WORKLOAD: ellipsoids-close boxes-close hulls-close ellipsoids-overlapping "
-                        "ellipsoids-distant boxes-distant hulls-distant\n");
+                        "ellipsoids-distant boxes-distant hulls-distant boxes-overlapping "
+                        "boxes-overlapping-boolean boxes-close-boolean "
+                        "ellipsoids-close-boolean\n");
         return 2;
     }
     coal = strcmp(argv[1], "coal") == 0;
