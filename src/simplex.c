@@ -517,11 +517,13 @@ static unsigned tetra_edge(const agjk_vec3 *w, int i, int j, int k, double gii, 
  * products of the lengths involved) by a wide margin, and when the
  * tetrahedron is well shaped at a (vol^2 > WELL_SHAPED |e0|^2 |e1|^2
  * |e2|^2: the weights then reproduce the origin to ~300 ulps of |a|);
- * other cases are left to the exhaustive projection. */
-static unsigned tetra_inside(const agjk_vec3 *w, double lambda[4], agjk_vec3 *point) {
+ * other cases are left to the exhaustive projection. The edges e_i = w_i - a
+ * and their squared lengths gd[i] come from the caller, which has them. */
+static unsigned tetra_inside(const agjk_vec3 *w, const agjk_vec3 *e, const double *gd,
+                             double lambda[4], agjk_vec3 *point) {
     agjk_vec3 a = w[3];
-    agjk_vec3 e0 = v3_sub(w[0], a), e1 = v3_sub(w[1], a), e2 = v3_sub(w[2], a);
-    double g00 = v3_norm2(e0), g11 = v3_norm2(e1), g22 = v3_norm2(e2);
+    agjk_vec3 e0 = e[0], e1 = e[1], e2 = e[2];
+    double g00 = gd[0], g11 = gd[1], g22 = gd[2];
     agjk_vec3 c12 = v3_cross(e1, e2), c20 = v3_cross(e2, e0), c01 = v3_cross(e0, e1);
     double vol = v3_dot(e0, c12);
     double n0 = -v3_dot(a, c12), n1 = -v3_dot(a, c20), n2 = -v3_dot(a, c01);
@@ -598,7 +600,7 @@ static unsigned gjk_tetrahedron(const agjk_vec3 *w, int exhaustive, double lambd
      * face or edge passes its KKT test, so the order changes no answer, and
      * the last step skips two faces and three edges (overlapping ellipsoids:
      * about 150 instructions per query). */
-    if (!mask && inward) mask = tetra_inside(w, lambda, point);
+    if (!mask && inward) mask = tetra_inside(w, e, gd, lambda, point);
     if (!mask && !taken)
         mask = tetra_face(w, e, gd, gx, r, back == 0 ? 1 : 0, &taken, &ignored, lambda, point);
     if (!mask && !taken)
@@ -610,7 +612,7 @@ static unsigned gjk_tetrahedron(const agjk_vec3 *w, int exhaustive, double lambd
         if (!mask)
             mask = tetra_edge(w, 2, 0, 1, gd[2], gx[1], gx[0], r[2], r[0], r[1], lambda, point);
         /* GJK's last step on overlapping shapes: the origin enclosed. */
-        if (!mask) mask = tetra_inside(w, lambda, point);
+        if (!mask) mask = tetra_inside(w, e, gd, lambda, point);
     }
     if (!mask && taken) mask = thin_face(w, taken, lambda, point);
     return mask ? mask : decline(w, 4, exhaustive, lambda, point);
