@@ -839,7 +839,7 @@ void agjk__solve(agjk__minkowski *md, const agjk__solve_input *in, agjk__solve_o
         if (sv.keep_a) warm_seed_points(in, &sv);
     }
     /* x_0 in solver units: d_{-1} = s_{-1} = x_0. */
-    agjk__momentum_init(&sv.m, in->method, d0, in->x0_given);
+    agjk__momentum_init(&sv.m, in->method, d0, in->x0_given, in->boolean_mode);
     if (warm) sv.m.active = 0;
     int adaptive = in->method == AGJK_METHOD_ADAPTIVE;
     int stalled = 0;     /* consecutive iterations without progress */

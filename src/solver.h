@@ -25,14 +25,19 @@ typedef struct agjk__momentum {
     double x0_norm2;  /* ||x_0||^2, solver units (-1 before the first support) */
     int flat_seen;    /* a point of A or B came back bit for bit (any method) */
     int plain_steps;  /* adaptive: iterations that may take plain steps when far */
+    int boolean;      /* Boolean mode (Alg. 2): the adaptive method's first-support test */
+    int guard_from;   /* adaptive: first iteration of the Nesterov phase's restart and
+                         plain-step tests (direction.c, ADAPTIVE_BOOLEAN_FREE) */
 } agjk__momentum;
 
 /* Phases of the adaptive method; the other methods stay in AGJK__PHASE_FIXED. */
 enum { AGJK__PHASE_FIXED = 0, AGJK__PHASE_POLYAK, AGJK__PHASE_NESTEROV, AGJK__PHASE_FINAL };
 
 /* Prepares the policy for a query started at x_0; given: x_0 is a caller's or
- * a cache's guess of x* (the adaptive method then trusts it from the start). */
-void agjk__momentum_init(agjk__momentum *m, agjk_method method, agjk_vec3 x0, int given);
+ * a cache's guess of x* (the adaptive method then trusts it from the start);
+ * boolean: the query stops at the first separating plane (Alg. 2). */
+void agjk__momentum_init(agjk__momentum *m, agjk_method method, agjk_vec3 x0, int given,
+                         int boolean);
 
 /* Alg. 6 lines 1-3: delta_k = (k+1)/(k+3),
  * y_k = delta_k x_k + (1 - delta_k) s_{k-1},
