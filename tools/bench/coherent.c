@@ -27,6 +27,8 @@
 enum { CO_COLD = 0, CO_HINT, CO_CACHE, CO_MODES };
 enum { CO_ROWS = 6 }; /* ellipsoids, boxes, meshes at speeds 1 and 5 */
 static const char *const co_mode_names[CO_MODES] = {"cold", "hint + direction", "cache"};
+/* bench_coherent_times' columns: one per row and mode. */
+typedef char co_columns_fit[CO_ROWS * CO_MODES == BENCH_COHERENT_COLUMNS ? 1 : -1];
 
 /* Rotation by `angle` about the unit `axis` (Rodrigues), row-major. */
 static void axis_rotation(agjk_vec3 axis, double angle, double r[3][3]) {
@@ -117,25 +119,36 @@ typedef struct co_stats {
     int contradictions;    /* separated vs intersecting, or distances apart */
 } co_stats;
 
-int bench_coherent_run(const bench_config *cfg, const bench_set *set, int pairs, int steps,
-                       int reps) {
-    static const int families[CO_ROWS] = {BENCH_ELLIPSOIDS, BENCH_ELLIPSOIDS, BENCH_BOXES,
-                                          BENCH_BOXES, BENCH_MESHES, BENCH_MESHES};
-    static const double speeds[CO_ROWS] = {1, 5, 1, 5, 1, 5};
+static const int families[CO_ROWS] = {BENCH_ELLIPSOIDS, BENCH_ELLIPSOIDS, BENCH_BOXES,
+                                      BENCH_BOXES, BENCH_MESHES, BENCH_MESHES};
+static const double speeds[CO_ROWS] = {1, 5, 1, 5, 1, 5};
+
+struct bench_coherent {
     co_stats st[CO_ROWS][CO_MODES];
+    int pairs, steps, reps;
+    int bad;        /* contradictions, all rows */
+    int processes;  /* the per-pair times are medians over this many (repeat.h) */
+};
+
+bench_coherent *bench_coherent_run(const bench_config *cfg, const bench_set *set, int pairs,
+                                   int steps, int reps) {
+    bench_coherent *c = calloc(1, sizeof *c);
+    co_stats (*st)[CO_MODES];
     agjk_pose *pa = malloc((size_t)steps * sizeof *pa), *pb = malloc((size_t)steps * sizeof *pb);
     agjk_result *res[CO_MODES];
     double *pass_ns = malloc((size_t)(reps > 0 ? reps : 1) * sizeof *pass_ns);
     bench_rng rng;
-    int f, m, bad = 0;
-    FILE *md, *csv;
-    char path[1024];
-    if (!pa || !pb || !pass_ns) abort();
+    int f, m;
+    if (!c || !pa || !pb || !pass_ns) abort();
+    st = c->st;
+    c->pairs = pairs;
+    c->steps = steps;
+    c->reps = reps;
+    c->processes = 1;
     for (m = 0; m < CO_MODES; ++m) {
         res[m] = malloc((size_t)steps * sizeof *res[m]);
         if (!res[m]) abort();
     }
-    memset(st, 0, sizeof st);
     bench_rng_seed(&rng, cfg->seed * 4 + 77);
     for (f = 0; f < CO_ROWS; ++f) {
         int i, done = 0;
@@ -174,23 +187,51 @@ int bench_coherent_run(const bench_config *cfg, const bench_set *set, int pairs,
                 }
                 s->ns[s->pairs++] = bench_median(pass_ns, reps);
                 for (k = 0; k < steps; ++k) {
-                    const agjk_result *x = &res[m][k], *c = &res[CO_COLD][k];
+                    const agjk_result *x = &res[m][k], *cold = &res[CO_COLD][k];
                     s->calls_all[s->queries++] = x->support_calls;
                     s->calls += x->support_calls;
                     if (m == CO_COLD) continue;
-                    if (x->status != c->status) s->status_diff++;
-                    if ((x->status == AGJK_STATUS_SEPARATED && c->status == AGJK_STATUS_INTERSECTING) ||
-                        (x->status == AGJK_STATUS_INTERSECTING && c->status == AGJK_STATUS_SEPARATED) ||
-                        fabs(x->distance - c->distance) > x->bound + c->bound + 1e-12 * p.r) {
+                    if (x->status != cold->status) s->status_diff++;
+                    if ((x->status == AGJK_STATUS_SEPARATED && cold->status == AGJK_STATUS_INTERSECTING) ||
+                        (x->status == AGJK_STATUS_INTERSECTING && cold->status == AGJK_STATUS_SEPARATED) ||
+                        fabs(x->distance - cold->distance) > x->bound + cold->bound + 1e-12 * p.r) {
                         s->contradictions++;
-                        ++bad;
+                        ++c->bad;
                     }
                 }
             }
             ++done;
         }
     }
+    for (m = 0; m < CO_MODES; ++m) free(res[m]);
+    free(pa);
+    free(pb);
+    free(pass_ns);
+    (void)cfg;
+    return c;
+}
 
+int bench_coherent_times(bench_coherent *c, bench_times *out) {
+    int f, m, n = 0;
+    for (f = 0; f < CO_ROWS; ++f)
+        for (m = 0; m < CO_MODES; ++m) {
+            co_stats *s = &c->st[f][m];
+            if (s->pairs == 0) continue;
+            out[n].first = s->ns;
+            out[n].count = s->pairs;
+            out[n].stride = sizeof s->ns[0];
+            ++n;
+        }
+    return n;
+}
+
+void bench_coherent_set_processes(bench_coherent *c, int processes) { c->processes = processes; }
+
+int bench_coherent_write(const bench_config *cfg, bench_coherent *c) {
+    co_stats (*st)[CO_MODES] = c->st;
+    int f, m, pairs = c->pairs, steps = c->steps, reps = c->reps;
+    FILE *md, *csv;
+    char path[1024];
     snprintf(path, sizeof path, "%s/tables.md", cfg->out_dir);
     md = fopen(path, "a");
     snprintf(path, sizeof path, "%s/coherent.csv", cfg->out_dir);
@@ -213,14 +254,15 @@ int bench_coherent_run(const bench_config *cfg, const bench_set *set, int pairs,
                          "by 0.001 and 0.002 rad per step while B slides from 5%% of its "
                          "radius apart to 3%% overlap and back once; fast: 5 times that "
                          "(tools/bench/coherent.c). ns per query: median over pairs of the "
-                         "median of %d passes. "
+                         "median of %d passes (each pair's time the median over %d "
+                         "process%s, see tools/bench/repeat.h). "
                          "Status differs / contradictions: against the cold query of the "
                          "same step (contradiction: separated vs intersecting, or distances "
                          "further apart than the two certified bounds).\n\n"
                          "| set | motion | mode | queries | support calls mean | median | "
                          "ns/query (median) | calls vs cold | time vs cold | status differs | "
                          "contradictions |\n|---|---|---|---|---|---|---|---|---|---|---|\n",
-                    pairs, steps, reps);
+                    pairs, steps, reps, c->processes, c->processes == 1 ? "" : "es");
             for (f = 0; f < CO_ROWS; ++f) {
                 double cold_calls = 0, cold_ns = 0;
                 for (m = 0; m < CO_MODES; ++m) {
@@ -249,14 +291,16 @@ int bench_coherent_run(const bench_config *cfg, const bench_set *set, int pairs,
     }
     if (md) fclose(md);
     if (csv) fclose(csv);
+    return c->bad;
+}
+
+void bench_coherent_free(bench_coherent *c) {
+    int f, m;
+    if (!c) return;
     for (f = 0; f < CO_ROWS; ++f)
         for (m = 0; m < CO_MODES; ++m) {
-            free(st[f][m].calls_all);
-            free(st[f][m].ns);
+            free(c->st[f][m].calls_all);
+            free(c->st[f][m].ns);
         }
-    for (m = 0; m < CO_MODES; ++m) free(res[m]);
-    free(pa);
-    free(pb);
-    free(pass_ns);
-    return bad;
+    free(c);
 }

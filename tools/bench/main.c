@@ -328,15 +328,26 @@ static int run_ccd(const bench_config *cfg, const bench_set *set, ccd_bench_reco
     return 0;
 }
 
-/* libccd's four columns, then agjk's and Coal's of the protocol and of each
- * stress family: at most this many. */
-#define COMPARISON_COLUMNS_MAX (CB_COUNT + 2 * (1 + 16))
+/* The coherent-motion benchmark when asked for (NULL otherwise). */
+static bench_coherent *run_coherent(const bench_config *cfg, const bench_set *set) {
+    if (cfg->coherent_pairs <= 0 || cfg->coherent_steps <= 0 || cfg->coherent_reps <= 0)
+        return NULL;
+    fprintf(stderr, "agjk-bench: coherent motion (%d pairs x %d steps, R = %d)\n",
+            cfg->coherent_pairs, cfg->coherent_steps, cfg->coherent_reps);
+    return bench_coherent_run(cfg, set, cfg->coherent_pairs, cfg->coherent_steps,
+                              cfg->coherent_reps);
+}
 
-/* The columns of times of the comparisons that ran (ccd NULL, coal NULL,
- * stress NULL: not run), in a fixed order that the parent and its children
+/* libccd's four columns, agjk's and Coal's of the protocol and of each
+ * stress family, the coherent-motion rows: at most this many. */
+#define COMPARISON_COLUMNS_MAX (CB_COUNT + 2 * (1 + 16) + BENCH_COHERENT_COLUMNS)
+
+/* The columns of times of the comparisons that ran (ccd, coal, stress,
+ * coherent NULL: not run), in a fixed order that the parent and its children
  * share (bench_repeat). Returns their number. */
 static int comparison_times(bench_times *t, ccd_bench_record *ccd, int ccd_count,
-                            coal_bench_data *coal, bench_stress *stress) {
+                            coal_bench_data *coal, bench_stress *stress,
+                            bench_coherent *coherent) {
     coal_bench_data *d[1 + 16];
     int n = 0, m = 0, k;
     if (ccd && ccd_count > 0)
@@ -348,6 +359,7 @@ static int comparison_times(bench_times *t, ccd_bench_record *ccd, int ccd_count
     if (coal) d[m++] = coal;
     m += bench_stress_coal_data(stress, d + m, 16);
     for (k = 0; k < m; ++k) n += coal_bench_times(d[k], t + n);
+    if (coherent) n += bench_coherent_times(coherent, t + n);
     return n;
 }
 
@@ -362,6 +374,7 @@ int main(int argc, char **argv) {
     unsigned char *ccd_outcome = NULL;
     coal_bench_data *coal;
     bench_stress *stress;
+    bench_coherent *coherent;
     int h, cap_problems, cap_shapes, depth_missed = 0, coherent_bad = 0;
     double t0, t_all = bench_now_ns();
     static char command[1024];
@@ -448,8 +461,11 @@ int main(int argc, char **argv) {
         if (run_ccd(&cfg, &set, &ccd_recs, &ccd_outcome, &seconds) != 0) return 2;
         coal = coal_bench_run(&cfg, &set);
         stress = bench_stress_run(&cfg);
-        n = comparison_times(t, ccd_recs, ccd_recs ? set.problem_count : 0, coal, stress);
+        coherent = run_coherent(&cfg, &set);
+        n = comparison_times(t, ccd_recs, ccd_recs ? set.problem_count : 0, coal, stress,
+                             coherent);
         rc = bench_times_save(cfg.child, t, n) == 0 ? 0 : 2;
+        bench_coherent_free(coherent);
         free(ccd_recs);
         free(ccd_outcome);
         coal_bench_free(coal);
@@ -484,9 +500,11 @@ int main(int argc, char **argv) {
 
     coal = coal_bench_run(&cfg, &set);
     stress = bench_stress_run(&cfg);
+    coherent = run_coherent(&cfg, &set);
     if (cfg.processes > 1) {
         bench_times t[COMPARISON_COLUMNS_MAX];
-        int n = comparison_times(t, ccd_recs, ccd_recs ? set.problem_count : 0, coal, stress);
+        int n = comparison_times(t, ccd_recs, ccd_recs ? set.problem_count : 0, coal, stress,
+                                 coherent);
         if (n > 0) {
             coal_bench_data *d[1 + 16];
             int k, m = 0, used = bench_repeat(t, n, argc, argv, cfg.out_dir, cfg.processes);
@@ -494,6 +512,7 @@ int main(int argc, char **argv) {
             m += bench_stress_coal_data(stress, d + m, 16);
             for (k = 0; k < m; ++k) d[k]->processes = used;
             if (ccd_recs) rep.ccd_processes = used;
+            if (coherent) bench_coherent_set_processes(coherent, used);
         }
     }
     if (cfg.depth_reps > 0 && bench_ccd_check() == 0) {
@@ -534,11 +553,9 @@ int main(int argc, char **argv) {
         bench_table_support_calls(stderr, &rep, coal);
     }
     coal_bench_free(coal);
-    if (cfg.coherent_pairs > 0 && cfg.coherent_steps > 0 && cfg.coherent_reps > 0) {
-        fprintf(stderr, "agjk-bench: coherent motion (%d pairs x %d steps, R = %d)\n",
-                cfg.coherent_pairs, cfg.coherent_steps, cfg.coherent_reps);
-        coherent_bad = bench_coherent_run(&cfg, &set, cfg.coherent_pairs, cfg.coherent_steps,
-                                          cfg.coherent_reps);
+    if (coherent) {
+        coherent_bad = bench_coherent_write(&cfg, coherent);
+        bench_coherent_free(coherent);
     }
     if (cfg.raw_path) write_raw(cfg.raw_path, &set, recs, rep.rec_count);
     {
