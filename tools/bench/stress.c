@@ -60,11 +60,14 @@ static const double touching_targets[4] = {-1e-6, -1e-9, 1e-9, 1e-6};
 static const int touching_categories[4] = {BENCH_OVERLAPPING, BENCH_OVERLAPPING, BENCH_CLOSE,
                                            BENCH_CLOSE};
 
-/* The adaptive method (agjk's default) in distance mode on one set and
- * category, run once per problem (untimed), judged by the reference. */
+/* The adaptive method (agjk's default) on one set and category, run once per
+ * problem and mode (untimed), judged by the reference. */
 typedef struct stress_adaptive {
-    double calls;              /* support calls, summed */
+    double calls;              /* distance mode: support calls, summed */
     int n, wrong, violations, no_verdict;
+    /* Boolean mode: its own rule for the first supports (direction.c). */
+    double bool_calls;
+    int bool_n, bool_wrong, bool_no_verdict;
 } stress_adaptive;
 
 struct bench_stress {
@@ -129,6 +132,16 @@ static void run_adaptive(bench_stress *s, int k, const bench_config *cfg) {
         a->wrong += rec.wrong;
         a->violations += rec.violation;
         a->no_verdict += !rec.converged;
+        memset(&rec, 0, sizeof rec);
+        if (bench_solve(set, p, BM_ADAPTIVE, BENCH_BOOLEAN, &o, &rec.run) != 0) continue;
+        rec.problem = i;
+        rec.method = BM_ADAPTIVE;
+        rec.mode = BENCH_BOOLEAN;
+        bench_evaluate(p, &rec);
+        a->bool_calls += rec.run.support_calls;
+        a->bool_n++;
+        a->bool_wrong += rec.wrong;
+        a->bool_no_verdict += !rec.converged;
     }
 }
 
@@ -248,6 +261,8 @@ static void ratio_table(FILE **out, int nout, const bench_stress *s, double *b0,
 static void adaptive_table(FILE *md, const bench_stress *s) {
     int k, c, m, i, rows = 0, worse = 0, worse_gjk = 0, worse_coal = 0;
     int wrong = 0, misses = 0, no_verdict = 0, runs = 0;
+    int bool_wrong = 0, bool_no_verdict = 0, bool_runs = 0;
+    double bool_calls = 0;
     fprintf(md, "### Stress set: support calls per distance query (mean), the adaptive method\n\n"
                 "| stress set | category | GJK | Nesterov | Nesterov-normalized | Polyak | best of "
                 "the four | Coal's best | Adaptive |\n|---|---|---|---|---|---|---|---|---|\n");
@@ -292,13 +307,20 @@ static void adaptive_table(FILE *md, const bench_stress *s) {
             misses += a->violations;
             no_verdict += a->no_verdict;
             runs += a->n;
+            bool_wrong += a->bool_wrong;
+            bool_no_verdict += a->bool_no_verdict;
+            bool_runs += a->bool_n;
+            bool_calls += a->bool_calls;
         }
     }
     fprintf(md, "\nAdaptive above the best of the four in %d of %d rows, above GJK in %d, above "
                 "Coal's best in %d. Its %d answers (distance mode, the tolerance of the table "
                 "above) against the certified reference: %d wrong verdicts, %d certified "
-                "intervals missing the reference, %d without a verdict.\n\n",
-            worse, rows, worse_gjk, worse_coal, runs, wrong, misses, no_verdict);
+                "intervals missing the reference, %d without a verdict. In Boolean mode, "
+                "%d answers: %d wrong verdicts, %d without a verdict (support calls per "
+                "query %.2f).\n\n",
+            worse, rows, worse_gjk, worse_coal, runs, wrong, misses, no_verdict, bool_runs,
+            bool_wrong, bool_no_verdict, bool_runs ? bool_calls / bool_runs : 0.0);
 }
 
 static const char *status_name(int status) { return agjk_status_string((agjk_status)status); }
