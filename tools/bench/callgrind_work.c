@@ -13,8 +13,8 @@
  * (GJK, distance),
  * ellipsoids-distant, boxes-distant, hulls-distant (GJK, Boolean); also
  * boxes-overlapping (distance), boxes-overlapping-boolean, boxes-close-boolean,
- * ellipsoids-close-boolean, ellipsoids-distant-distance (for timing other
- * cells); hulls: 141
+ * ellipsoids-close-boolean, ellipsoids-distant-distance, hulls-overlapping
+ * (for timing other cells); hulls: 141
  * points on an ellipsoid, hill climbing on the Qhull hull's vertex graph (agjk)
  * and Coal's own graph of the same hull, as in the benchmark. stdout: one line per query, "query I
  * support_calls N verdict V", in dump order. */
@@ -50,6 +50,7 @@ static const workload workloads[] = {
     {"boxes-close-boolean", BENCH_BOXES, BENCH_CLOSE, BENCH_BOOLEAN, 0},
     {"ellipsoids-close-boolean", BENCH_ELLIPSOIDS, BENCH_CLOSE, BENCH_BOOLEAN, 0},
     {"ellipsoids-distant-distance", BENCH_ELLIPSOIDS, BENCH_DISTANT, BENCH_DISTANCE, 0},
+    {"hulls-overlapping", BENCH_HULLS, BENCH_OVERLAPPING, BENCH_DISTANCE, 141},
 };
 
 typedef struct agjk_query {
@@ -221,7 +222,8 @@ int main(int argc, char **argv) {
                         "WORKLOAD: ellipsoids-close boxes-close hulls-close ellipsoids-overlapping "
                         "ellipsoids-distant boxes-distant hulls-distant boxes-overlapping "
                         "boxes-overlapping-boolean boxes-close-boolean "
-                        "ellipsoids-close-boolean ellipsoids-distant-distance\n");
+                        "ellipsoids-close-boolean ellipsoids-distant-distance "
+                        "hulls-overlapping\n");
         return 2;
     }
     coal = strcmp(argv[1], "coal") == 0;
