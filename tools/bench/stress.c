@@ -108,8 +108,21 @@ static void move_far(bench_set *set, bench_rng *rng) {
     }
 }
 
-/* The adaptive method on every problem of set k, with the tolerance the
- * Coal comparison used there (tolerance x scale^2). */
+/* One run of the adaptive method on problem i of set in `mode`, judged by
+ * the reference into *rec; 0, or -1 when it could not run. */
+static int judge_adaptive(const bench_set *set, int i, int mode, const bench_solve_options *o,
+                          bench_record *rec) {
+    memset(rec, 0, sizeof *rec);
+    if (bench_solve(set, &set->problems[i], BM_ADAPTIVE, mode, o, &rec->run) != 0) return -1;
+    rec->problem = i;
+    rec->method = BM_ADAPTIVE;
+    rec->mode = mode;
+    bench_evaluate(&set->problems[i], rec);
+    return 0;
+}
+
+/* The adaptive method on every problem of set k, in both modes, with the
+ * tolerance the Coal comparison used there (tolerance x scale^2). */
 static void run_adaptive(bench_stress *s, int k, const bench_config *cfg) {
     const bench_set *set = &s->sets[k];
     int i;
@@ -119,29 +132,21 @@ static void run_adaptive(bench_stress *s, int k, const bench_config *cfg) {
         bench_solve_options o;
         bench_record rec;
         memset(&o, 0, sizeof o);
-        memset(&rec, 0, sizeof rec);
         o.tolerance = cfg->tolerance * p->scale * p->scale;
         o.max_iterations = cfg->max_iterations;
-        if (bench_solve(set, p, BM_ADAPTIVE, BENCH_DISTANCE, &o, &rec.run) != 0) continue;
-        rec.problem = i;
-        rec.method = BM_ADAPTIVE;
-        rec.mode = BENCH_DISTANCE;
-        bench_evaluate(p, &rec);
-        a->calls += rec.run.support_calls;
-        a->n++;
-        a->wrong += rec.wrong;
-        a->violations += rec.violation;
-        a->no_verdict += !rec.converged;
-        memset(&rec, 0, sizeof rec);
-        if (bench_solve(set, p, BM_ADAPTIVE, BENCH_BOOLEAN, &o, &rec.run) != 0) continue;
-        rec.problem = i;
-        rec.method = BM_ADAPTIVE;
-        rec.mode = BENCH_BOOLEAN;
-        bench_evaluate(p, &rec);
-        a->bool_calls += rec.run.support_calls;
-        a->bool_n++;
-        a->bool_wrong += rec.wrong;
-        a->bool_no_verdict += !rec.converged;
+        if (judge_adaptive(set, i, BENCH_DISTANCE, &o, &rec) == 0) {
+            a->calls += rec.run.support_calls;
+            a->n++;
+            a->wrong += rec.wrong;
+            a->violations += rec.violation;
+            a->no_verdict += !rec.converged;
+        }
+        if (judge_adaptive(set, i, BENCH_BOOLEAN, &o, &rec) == 0) {
+            a->bool_calls += rec.run.support_calls;
+            a->bool_n++;
+            a->bool_wrong += rec.wrong;
+            a->bool_no_verdict += !rec.converged;
+        }
     }
 }
 
