@@ -181,9 +181,9 @@ __attribute__((weak)) void agjk__ellipsoid_support(const void *, const agjk_vec3
  * function's own copy of d and md->callback_point to write: no address of
  * the caller's point or direction is ever taken, so that they stay in
  * registers on the inline paths (with `out` the caller's own point, clang
- * kept it on the stack on
- * every path: clang-built close box queries took 250 ns instead of 222; gcc's
- * support path 217 instructions per call on ellipsoids instead of 185). */
+ * kept it on the stack on every path: clang-built close box queries took
+ * 250 ns instead of 222; gcc's support path 217 instructions per call on
+ * ellipsoids instead of 185). */
 static AGJK__ALWAYS_INLINE agjk_vec3 agjk__shape_support(agjk__minkowski *md, agjk_support_fn fn,
                                                          const void *data, agjk_vec3 d, int *hint,
                                                          int direct) {

@@ -338,9 +338,21 @@ static bench_coherent *run_coherent(const bench_config *cfg, const bench_set *se
                               cfg->coherent_reps);
 }
 
-/* libccd's four columns, agjk's and Coal's of the protocol and of each
- * stress family, the coherent-motion rows: at most this many. */
-#define COMPARISON_COLUMNS_MAX (CB_COUNT + 2 * (1 + 16) + BENCH_COHERENT_COLUMNS)
+/* The stress set's Coal comparisons: at most this many families. */
+#define STRESS_FAMILIES_MAX 16
+
+/* The Coal comparisons that ran: the protocol's (coal, NULL: none), then the
+ * stress set's families. Returns their number, at most 1 + STRESS_FAMILIES_MAX. */
+static int coal_data_of(coal_bench_data *coal, bench_stress *stress, coal_bench_data **d) {
+    int m = 0;
+    if (coal) d[m++] = coal;
+    return m + bench_stress_coal_data(stress, d + m, STRESS_FAMILIES_MAX);
+}
+
+/* libccd's four columns, agjk's and Coal's of each Coal comparison, the
+ * coherent-motion rows: at most this many. */
+#define COMPARISON_COLUMNS_MAX \
+    (CB_COUNT + 2 * (1 + STRESS_FAMILIES_MAX) + BENCH_COHERENT_COLUMNS)
 
 /* The columns of times of the comparisons that ran (ccd, coal, stress,
  * coherent NULL: not run), in a fixed order that the parent and its children
@@ -348,16 +360,14 @@ static bench_coherent *run_coherent(const bench_config *cfg, const bench_set *se
 static int comparison_times(bench_times *t, ccd_bench_record *ccd, int ccd_count,
                             coal_bench_data *coal, bench_stress *stress,
                             bench_coherent *coherent) {
-    coal_bench_data *d[1 + 16];
-    int n = 0, m = 0, k;
+    coal_bench_data *d[1 + STRESS_FAMILIES_MAX];
+    int n = 0, m = coal_data_of(coal, stress, d), k;
     if (ccd && ccd_count > 0)
         for (k = 0; k < CB_COUNT; ++k, ++n) {
             t[n].first = &ccd[0].time_ns[k];
             t[n].count = ccd_count;
             t[n].stride = sizeof ccd[0];
         }
-    if (coal) d[m++] = coal;
-    m += bench_stress_coal_data(stress, d + m, 16);
     for (k = 0; k < m; ++k) n += coal_bench_times(d[k], t + n);
     if (coherent) n += bench_coherent_times(coherent, t + n);
     return n;
@@ -506,10 +516,9 @@ int main(int argc, char **argv) {
         int n = comparison_times(t, ccd_recs, ccd_recs ? set.problem_count : 0, coal, stress,
                                  coherent);
         if (n > 0) {
-            coal_bench_data *d[1 + 16];
-            int k, m = 0, used = bench_repeat(t, n, argc, argv, cfg.out_dir, cfg.processes);
-            if (coal) d[m++] = coal;
-            m += bench_stress_coal_data(stress, d + m, 16);
+            coal_bench_data *d[1 + STRESS_FAMILIES_MAX];
+            int k, m = coal_data_of(coal, stress, d),
+                   used = bench_repeat(t, n, argc, argv, cfg.out_dir, cfg.processes);
             for (k = 0; k < m; ++k) d[k]->processes = used;
             if (ccd_recs) rep.ccd_processes = used;
             if (coherent) bench_coherent_set_processes(coherent, used);
