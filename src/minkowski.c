@@ -29,6 +29,7 @@ static void set_limits(agjk__minkowski *md) {
     double limit = AGJK__SOLVER_SIZE_LIMIT / md->scale;
     md->point_limit = limit < AGJK_MAX_COORDINATE ? limit : AGJK_MAX_COORDINATE;
     md->raw_limit = md->scale == 1.0 ? md->point_limit : -1.0;
+    md->bounded = 0;
     /* A tiny problem (scale > 1) needs unit-size directions: a small direction
      * times its tiny coordinates would underflow and lose the sign. */
     agjk__minkowski_set_direction_min(md, md->scale > 1.0 ? 1.0 : AGJK__DIRECTION_MIN);
@@ -84,6 +85,60 @@ void agjk__minkowski_init(agjk__minkowski *md, const agjk_shape *a, const agjk_p
      * has seen it. */
     set_limits(md);
     agjk__minkowski_set_direction_min(md, 1.0);
+}
+
+/* Bounds on the 1-norm (*l1) and the max norm (*max) of every support
+ * point of a built-in shape whose data bound them: 0 for another shape, or
+ * for data a caller changed to be invalid after agjk_shape_*() accepted it
+ * (the support path's own tests then catch what it gives). The built-ins
+ * are recognised through the weak references of the direct support path:
+ * a program without ellipsoids links no ellipsoid code for this either. */
+static int point_bounds(agjk_support_fn fn, const void *data, double *l1, double *max) {
+#if AGJK__DIRECT_SUPPORT
+    if (fn == agjk__point_support) {
+        *l1 = *max = 0.0;
+        return 1;
+    }
+    if (!data) return 0;
+    if (fn == agjk__box_support) {
+        /* Every support point is a corner: these norms exactly. */
+        agjk_vec3 h = ((const agjk_box *)data)->half_extents;
+        if (!(v3_in_range(h) && h.x >= 0.0 && h.y >= 0.0 && h.z >= 0.0)) return 0;
+        *l1 = v3_norm1(h);
+        *max = v3_maxabs(h);
+        return 1;
+    }
+    if (fn == agjk__ellipsoid_support) {
+        /* |p_i| <= r_i for a support point D^2 d / ||D d||; computed, a few
+         * ulps more, which the factor 1 + 2^-40 covers. */
+        agjk_vec3 r = ((const agjk_ellipsoid *)data)->radii;
+        if (!(v3_in_range(r) && r.x > 0.0 && r.y > 0.0 && r.z > 0.0)) return 0;
+        *l1 = v3_norm1(r) * (1.0 + 0x1p-40);
+        *max = v3_maxabs(r) * (1.0 + 0x1p-40);
+        return 1;
+    }
+    if (fn == agjk__segment_support) {
+        double h = ((const agjk_capsule *)data)->half_height;
+        if (!(h >= 0.0 && h <= AGJK_MAX_COORDINATE)) return 0;
+        *l1 = *max = h;
+        return 1;
+    }
+#else
+    (void)fn;
+    (void)data;
+    (void)l1;
+    (void)max;
+#endif
+    return 0;
+}
+
+void agjk__minkowski_bound_points_from_data(agjk__minkowski *md) {
+    double l1_a, max_a, l1_b, max_b;
+    if (!point_bounds(md->support_a, md->data_a, &l1_a, &max_a) ||
+        !point_bounds(md->support_b, md->data_b, &l1_b, &max_b) || !(l1_a + l1_b <= md->raw_limit))
+        return;
+    if (max_a + max_b > md->magnitude) agjk__minkowski_grow(md, max_a + max_b);
+    md->bounded = 1;
 }
 
 /* Multiplies everything md holds in solver units by f (a power of two). */

@@ -44,6 +44,10 @@ typedef struct agjk__minkowski {
      * by the scale (agjk__minkowski_points_slow does). */
     double raw_limit;
     double point_limit;
+    /* Set by agjk__minkowski_bound_points when both shapes are built-ins
+     * whose data bound every support point within raw_limit: the support
+     * path then checks nothing (see there). Cleared by any change of scale. */
+    int bounded;
     double direction_min;
     /* 4 direction_min^2: a direction whose computed squared norm lies in
      * [direction_floor2, AGJK__DIRECTION_NORM2_MAX] has max |d_i| in
@@ -94,6 +98,9 @@ double agjk__minkowski_rescale_extreme(agjk__minkowski *md, double size);
  * solver units and the magnitude grows to their max norms if larger. */
 agjk_vec3 agjk__minkowski_rescue_direction(const agjk__minkowski *md, agjk_vec3 d);
 void agjk__minkowski_points_slow(agjk__minkowski *md, agjk_vec3 *pa, agjk_vec3 *pb);
+
+/* Its part for ellipsoids (minkowski.c): from the shapes' data. */
+void agjk__minkowski_bound_points_from_data(agjk__minkowski *md);
 
 /* Directions handed to callbacks keep max |d_i| >= dmin from now on: records
  * it with 4 dmin^2, its test on a squared norm (agjk__minkowski_support). */
@@ -207,6 +214,45 @@ static AGJK__ALWAYS_INLINE agjk_vec3 agjk__shape_support(agjk__minkowski *md, ag
     return md->callback_point;
 }
 
+/* A box, a capsule's segment or a point: every support point has the same
+ * 1-norm and max norm, whatever the direction. */
+static inline int agjk__constant_norms(agjk_support_fn fn) {
+#if AGJK__DIRECT_SUPPORT
+    return fn == agjk__box_support || fn == agjk__point_support || fn == agjk__segment_support;
+#else
+    (void)fn;
+    return 0;
+#endif
+}
+
+static inline int agjk__is_ellipsoid(agjk_support_fn fn) {
+#if AGJK__DIRECT_SUPPORT
+    return fn == agjk__ellipsoid_support;
+#else
+    (void)fn;
+    return 0;
+#endif
+}
+
+/* After the first support has come back good and set the scale, for the
+ * rest of the query: sets md->bounded when the scale is 1 and both shapes
+ * are built-ins whose every support point is known to pass the support
+ * path's tests, which are then skipped. For boxes, segments and points that
+ * is known from the first support already, since every later one has the
+ * same norms (and the magnitude stays where it is); with an ellipsoid it
+ * takes the shapes' data, which also raise the magnitude to the bound they
+ * give (agjk__minkowski_bound_points_from_data). */
+static inline void agjk__minkowski_bound_points(agjk__minkowski *md) {
+    if (md->scale != 1.0 || md->bad_support) return;
+    int constant_a = agjk__constant_norms(md->support_a);
+    int constant_b = agjk__constant_norms(md->support_b);
+    if (constant_a && constant_b)
+        md->bounded = 1;
+    else if ((constant_a || agjk__is_ellipsoid(md->support_a)) &&
+             (constant_b || agjk__is_ellipsoid(md->support_b)))
+        agjk__minkowski_bound_points_from_data(md);
+}
+
 /* s = argmin_{s in D} <d, s> = S_A(-d) - S_B(d) (paper eq. 7-8), d in A's frame,
  * non-zero and finite, with the points of A and B it came from. d2 is
  * v3_norm2(d) when the caller has it at hand (the solver's iterate), else 0. */
@@ -228,24 +274,26 @@ static AGJK__ALWAYS_INLINE void agjk__minkowski_support(agjk__minkowski *md, agj
     agjk_vec3 db = m3_tmul(&md->rotation[0][0], d);
     agjk_vec3 pa = agjk__shape_support(md, md->support_a, md->data_a, na, &md->hint_a, direct);
     agjk_vec3 pb = agjk__shape_support(md, md->support_b, md->data_b, db, &md->hint_b, direct);
-    /* One test covers NaN, Inf, AGJK_MAX_COORDINATE, the solver's size
-     * limit and a scale other than 1: the 1-norm propagates NaN and bounds
-     * every coordinate. */
-    double l1 = v3_norm1(pa) + v3_norm1(pb);
-    if (l1 <= md->raw_limit) {
-        /* The magnitude: the largest sum of max norms. (Taking the max norms
-         * only when l1 exceeds the magnitude, which bounds them, filtered
-         * almost nothing: the 1-norm of a support point is well above its
-         * max norm, and the test cost more than it saved.) */
-        double raw = v3_maxabs(pa) + v3_maxabs(pb);
-        if (raw > md->magnitude) agjk__minkowski_grow(md, raw);
-    } else {
-        /* (Through copies: pa and pb themselves never have their address
-         * taken, so that they stay in registers.) */
-        agjk_vec3 qa = pa, qb = pb;
-        agjk__minkowski_points_slow(md, &qa, &qb);
-        pa = qa;
-        pb = qb;
+    if (!md->bounded) {
+        /* One test covers NaN, Inf, AGJK_MAX_COORDINATE, the solver's size
+         * limit and a scale other than 1: the 1-norm propagates NaN and
+         * bounds every coordinate. */
+        double l1 = v3_norm1(pa) + v3_norm1(pb);
+        if (l1 <= md->raw_limit) {
+            /* The magnitude: the largest sum of max norms. (Taking the max
+             * norms only when l1 exceeds the magnitude, which bounds them,
+             * filtered almost nothing: the 1-norm of a support point is well
+             * above its max norm, and the test cost more than it saved.) */
+            double raw = v3_maxabs(pa) + v3_maxabs(pb);
+            if (raw > md->magnitude) agjk__minkowski_grow(md, raw);
+        } else {
+            /* (Through copies: pa and pb themselves never have their
+             * address taken, so that they stay in registers.) */
+            agjk_vec3 qa = pa, qb = pb;
+            agjk__minkowski_points_slow(md, &qa, &qb);
+            pa = qa;
+            pb = qb;
+        }
     }
     agjk_vec3 b = v3_add(m3_mul(&md->rotation[0][0], pb), md->translation);
     out->w = v3_sub(pa, b);

@@ -803,6 +803,7 @@ void agjk__solve(agjk__minkowski *md, const agjk__solve_input *in, agjk__solve_o
         out->a = out->b = v3(0.0, 0.0, 0.0);
         return;
     }
+    agjk__minkowski_bound_points(md);
 
     sv.lambda[0] = 1.0;
     sv.lambda[1] = sv.lambda[2] = sv.lambda[3] = 0.0;
