@@ -333,8 +333,17 @@ agjk_vec3 agjk__momentum_direction_other(const agjk__momentum *m, int k, agjk_ve
          * ||y|| (which stalls momentum early on polytopes). */
         double delta = (kk + 1.0) / (kk + 3.0);
         agjk_vec3 y = v3_lerp2(x, delta, m->s_prev, 1.0 - delta);
-        agjk_vec3 yn = v3_normalize(y);
         agjk_vec3 dn = v3_normalize(m->d_prev);
+        double yy = v3_norm2(y);
+        if (yy >= 0x1p-900 && yy <= 0x1p900) {
+            /* The same direction times ||y||: a square root and no division
+             * between x and d (d_prev's unit vector is ready before x). The
+             * support depends on the direction alone, and the next step
+             * normalises d again. */
+            d = v3_lerp2(dn, delta * sqrt(yy), y, 1.0 - delta);
+            break;
+        }
+        agjk_vec3 yn = v3_normalize(y);
         if (v3_norm2(yn) == 0.0) yn = v3_normalize(x);
         d = v3_lerp2(dn, delta, yn, 1.0 - delta);
         break;

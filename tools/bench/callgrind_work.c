@@ -75,15 +75,16 @@ int measured_agjk(const agjk_query *q, agjk_result *res) {
 
 int measured_coal(void *query) { return coal_adapter_query_run(query); }
 
-/* The method of both libraries: plain GJK, or AGJK_WORK_METHOD=nesterov or
- * polyak in the environment (a quick look at the momentum variants; the
- * callgrind table is plain GJK), or adaptive (agjk's default; Coal then runs
- * Nesterov). */
+/* The method of both libraries: plain GJK, or AGJK_WORK_METHOD=nesterov,
+ * normalized or polyak in the environment (a quick look at the momentum
+ * variants; the callgrind table is plain GJK), or adaptive (agjk's default;
+ * Coal then runs Nesterov). */
 static int work_method(void) {
     const char *m = getenv("AGJK_WORK_METHOD");
     if (m && strcmp(m, "nesterov") == 0) return 1;
     if (m && strcmp(m, "polyak") == 0) return 2;
     if (m && strcmp(m, "adaptive") == 0) return 3;
+    if (m && strcmp(m, "normalized") == 0) return 4;
     return 0;
 }
 
@@ -99,7 +100,8 @@ static void agjk_query_init(agjk_query *q, const bench_set *set, const bench_pro
     q->boolean = w->mode == BENCH_BOOLEAN;
     q->opt = agjk_default_options();
     q->opt.method = (const agjk_method[]){AGJK_METHOD_GJK, AGJK_METHOD_NESTEROV,
-                                          AGJK_METHOD_POLYAK, AGJK_METHOD_ADAPTIVE}[work_method()];
+                                          AGJK_METHOD_POLYAK, AGJK_METHOD_ADAPTIVE,
+                                          AGJK_METHOD_NESTEROV_NORMALIZED}[work_method()];
     q->opt.tolerance = 1e-8;
     q->opt.max_iterations = 1000;
     q->opt.compute = getenv("AGJK_WORK_WITNESS") ? AGJK_COMPUTE_WITNESS : AGJK_COMPUTE_DISTANCE;
@@ -109,7 +111,8 @@ static void coal_desc_init(coal_query_desc *d, const agjk_query *q) {
     memset(d, 0, sizeof *d);
     coal_bench_pose(&q->p->pose_a, d->rotation_a, d->translation_a);
     coal_bench_pose(&q->p->pose_b, d->rotation_b, d->translation_b);
-    d->method = (const int[]){COAL_GJK, COAL_NESTEROV, COAL_POLYAK, COAL_NESTEROV}[work_method()];
+    d->method = (const int[]){COAL_GJK, COAL_NESTEROV, COAL_POLYAK, COAL_NESTEROV,
+                              COAL_NESTEROV_NORMALIZED}[work_method()];
     d->boolean = q->boolean;
     d->tolerance = 1e-8;
     d->max_iterations = 1000;
@@ -216,7 +219,7 @@ int main(int argc, char **argv) {
                      strcmp(argv[1], "time") != 0)) {
         fprintf(stderr, "usage: agjk-callgrind-work agjk|coal WORKLOAD [PROBLEMS]\n"
                         "       agjk-callgrind-work time WORKLOAD [PROBLEMS [REPS]]\n"
-                        "environment: AGJK_WORK_METHOD=nesterov|polyak|adaptive, "
+                        "environment: AGJK_WORK_METHOD=nesterov|normalized|polyak|adaptive, "
                         "AGJK_WORK_WITNESS=1, AGJK_WORK_VS=mpr (time: libccd's MPR "
                         "instead of Coal)\n"
                         "WORKLOAD: ellipsoids-close boxes-close hulls-close ellipsoids-overlapping "
