@@ -60,13 +60,6 @@ typedef struct agjk__minkowski {
     agjk_vec3 callback_point;
 } agjk__minkowski;
 
-/* Checks a pose: translation in range, rotation orthonormal with det +1
- * (rows 0 and 1 orthonormal, row 2 their cross product, to 1e-6). */
-int agjk__pose_is_valid(const agjk_pose *pose);
-
-/* Prepares the relative transform. Shapes and poses must have been validated. */
-void agjk__minkowski_init(agjk__minkowski *md, const agjk_shape *a, const agjk_pose *pose_a,
-                          const agjk_shape *b, const agjk_pose *pose_b, int hint_a, int hint_b);
 
 /* Solver units keep support points below this (2^100): sixth powers stay finite. */
 #define AGJK__SOLVER_SIZE_LIMIT 0x1p100
@@ -129,6 +122,18 @@ static inline void agjk__minkowski_grow(agjk__minkowski *md, double magnitude) {
     double noise = 4.0 * DBL_EPSILON * (magnitude + md->translation_size);
     md->noise = noise > md->noise_floor ? noise : md->noise_floor;
 }
+
+/* Limits of the common support path for the current scale (see agjk__minkowski). */
+static inline void agjk__minkowski_set_limits(agjk__minkowski *md) {
+    double limit = AGJK__SOLVER_SIZE_LIMIT / md->scale;
+    md->point_limit = limit < AGJK_MAX_COORDINATE ? limit : AGJK_MAX_COORDINATE;
+    md->raw_limit = md->scale == 1.0 ? md->point_limit : -1.0;
+    md->bounded = 0;
+    /* A tiny problem (scale > 1) needs unit-size directions: a small direction
+     * times its tiny coordinates would underflow and lose the sign. */
+    agjk__minkowski_set_direction_min(md, md->scale > 1.0 ? 1.0 : AGJK__DIRECTION_MIN);
+}
+
 
 /* The smallest positive length in the caller's units (the least subnormal),
  * in solver units: a lower bound on a distance must exceed a few of these to

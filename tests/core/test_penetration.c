@@ -22,6 +22,7 @@
 #include "ref_depth.h"
 #include "testutil.h"
 #include "../../src/epa.h"
+#include "../../src/query_setup.h"
 
 static agjk_pose ident(void) { return tu_pose_identity(); }
 
@@ -590,7 +591,8 @@ START_TEST(four_point_starts) {
     const double truth = 0.2;
     for (int kind = 0; kind < 4; ++kind) {
         agjk__minkowski md;
-        agjk__minkowski_init(&md, &a, &pa, &b, &pb, 0, 0);
+        agjk__solve_input setup;
+        TU_CHECK(agjk__query_prepare(&a, &pa, &b, &pb, NULL, &md, &setup));
         /* Vertices of D: the support in direction -(sx, sy, sz) is the
          * corner on that side. */
         agjk__vertex corner[8];
