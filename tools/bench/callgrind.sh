@@ -59,9 +59,12 @@ for w in ellipsoids-close boxes-close hulls-close ellipsoids-overlapping ellipso
             "$driver" "$lib" "$w" "$problems" >"$dir/queries-valgrind.txt" 2>"$dir/valgrind.log"
         cmp -s "$dir/queries.txt" "$dir/queries-valgrind.txt" ||
             { echo "callgrind.sh: $w $lib answered differently under valgrind" >&2; exit 1; }
+        # Dumps in query order: by the number after the file name's last dot
+        # (the folder's own name may hold dots too).
         # shellcheck disable=SC2046
         "$python" "$here/callgrind_split.py" "$lib" "$dir/queries.txt" --binary "$driver" \
-            $(ls "$dir"/callgrind.out.*.* | sort -t. -k4 -n) >"$dir/split.json"
+            $(ls "$dir"/callgrind.out.*.* | awk -F. '{print $NF "\t" $0}' | sort -n | cut -f2-) \
+            >"$dir/split.json"
         "$python" - "$w" "$dir/split.json" >>"$summary" <<'PY'
 import json, sys
 w, path = sys.argv[1], sys.argv[2]
