@@ -373,7 +373,7 @@ static AGJK__NOINLINE AGJK__COLD int certify_overlap(solver *sv, agjk__solve_out
         dirs[nd++] = v3_neg(c);
     } else if (n == 4) {
         /* Beyond each shallow face: its outward normal. */
-            unsigned shallow = shallow_faces(p, noise);
+        unsigned shallow = shallow_faces(p, noise);
         for (int f = 0; f < 4; ++f) {
             if (!(shallow & (1u << f))) continue;
             agjk_vec3 q = p[tetra_faces[f][0]];
@@ -617,12 +617,10 @@ static int gap_lies(const solver *sv, double g) {
 /* Adaptive method: stops at x (a point of D) when the best support plane met
  * so far, in any direction, certifies it as the gap does (direction.c), or
  * when that plane lies beyond x, which proves a lying support. Returns 1 with
- * out->outcome set. */
-static int plane_stops(solver *sv, agjk__solve_output *out, int k) {
+ * out->outcome set. gp: the plane's gap at x (plane_stops). */
+static AGJK__NOINLINE int plane_stops_slow(solver *sv, agjk__solve_output *out, int k,
+                                           double gp) {
     const agjk__momentum *m = &sv->m;
-    double n = sqrt(sv->x2);
-    /* 2 ||x|| (||x|| - plane) >= ||x||^2 - ||x*||^2 >= ||x - x*||^2 */
-    double gp = 2.0 * n * (n - m->plane);
     if (gap_lies(sv, gp)) {
         out->outcome = AGJK__BAD_SUPPORT; /* a plane beyond x, a point of D */
         return 1;
@@ -637,6 +635,24 @@ static int plane_stops(solver *sv, agjk__solve_output *out, int k) {
     out->gap_valid = 1;
     out->outcome = v;
     return 1;
+}
+
+/* Inline, the common case (a plane gap above the tolerance and the floor,
+ * with no lie: go on) is three tests, exactly gap_verdict's for an absolute
+ * tolerance; the rest out of line. Twice per iteration, the call and the
+ * full tests took 150 of the adaptive method's 4080 instructions per query on
+ * close boxes. */
+static inline int plane_stops(solver *sv, agjk__solve_output *out, int k) {
+    double n = sqrt(sv->x2);
+    /* 2 ||x|| (||x|| - plane) >= ||x||^2 - ||x*||^2 >= ||x - x*||^2 */
+    double gp = 2.0 * n * (n - sv->m.plane);
+    /* gap_verdict's answer, "not met", for an absolute tolerance, and no
+     * lie (gp > 0); a NaN gp (no plane yet at x = 0) goes on as well. */
+    double noise = sv->md->noise;
+    if (!sv->in->relative && gp > sv->abs_tolerance && gp * gp > 4.0 * noise * noise * sv->x2)
+        return 0;
+    if (gp != gp) return 0;
+    return plane_stops_slow(sv, out, k, gp);
 }
 
 /* Warm start: puts in->warm (projected by agjk__cache_load, cache.c) into
