@@ -9,6 +9,21 @@
  * (the support path's own tests then catch what it gives). The built-ins
  * are recognised through the weak references of the direct support path:
  * a program without ellipsoids links no ellipsoid code for this either. */
+/* Sum and largest of three numbers in [lo, AGJK_MAX_COORDINATE] (lo: 0
+ * included or not): 1 with them, else 0 (NaN fails too). Non-negative, so
+ * no absolute values: the same bits as v3_norm1 and v3_maxabs. */
+static int extents(agjk_vec3 h, int zero_allowed, double *sum, double *largest) {
+    int low = zero_allowed ? h.x >= 0.0 && h.y >= 0.0 && h.z >= 0.0
+                           : h.x > 0.0 && h.y > 0.0 && h.z > 0.0;
+    if (!(low && h.x <= AGJK_MAX_COORDINATE && h.y <= AGJK_MAX_COORDINATE &&
+          h.z <= AGJK_MAX_COORDINATE))
+        return 0;
+    double m = h.x > h.y ? h.x : h.y;
+    *largest = m > h.z ? m : h.z;
+    *sum = h.x + h.y + h.z;
+    return 1;
+}
+
 static int point_bounds(agjk_support_fn fn, const void *data, double *l1, double *max) {
 #if AGJK__DIRECT_SUPPORT
     if (fn == agjk__point_support) {
@@ -16,23 +31,16 @@ static int point_bounds(agjk_support_fn fn, const void *data, double *l1, double
         return 1;
     }
     if (!data) return 0;
-    if (fn == agjk__box_support) {
-        /* Every support point is a corner: these norms exactly. */
-        agjk_vec3 h = ((const agjk_box *)data)->half_extents;
-        if (!(v3_in_range(h) && h.x >= 0.0 && h.y >= 0.0 && h.z >= 0.0)) return 0;
-        *l1 = v3_norm1(h);
-        *max = v3_maxabs(h);
-        return 1;
-    }
     if (fn == agjk__ellipsoid_support) {
         /* |p_i| <= r_i for a support point D^2 d / ||D d||; computed, a few
          * ulps more, which the factor 1 + 2^-40 covers. */
-        agjk_vec3 r = ((const agjk_ellipsoid *)data)->radii;
-        if (!(v3_in_range(r) && r.x > 0.0 && r.y > 0.0 && r.z > 0.0)) return 0;
-        *l1 = v3_norm1(r) * (1.0 + 0x1p-40);
-        *max = v3_maxabs(r) * (1.0 + 0x1p-40);
+        if (!extents(((const agjk_ellipsoid *)data)->radii, 0, l1, max)) return 0;
+        *l1 *= 1.0 + 0x1p-40;
+        *max *= 1.0 + 0x1p-40;
         return 1;
     }
+    if (fn == agjk__box_support) /* every support point a corner: these norms exactly */
+        return extents(((const agjk_box *)data)->half_extents, 1, l1, max);
     if (fn == agjk__segment_support) {
         double h = ((const agjk_capsule *)data)->half_height;
         if (!(h >= 0.0 && h <= AGJK_MAX_COORDINATE)) return 0;
