@@ -3,15 +3,10 @@
  * the rare paths of the support, and a priori bounds of built-in shapes. */
 #include "minkowski.h"
 
-/* Bounds on the 1-norm (*l1) and the max norm (*max) of every support
- * point of a built-in shape whose data bound them: 0 for another shape, or
- * for data a caller changed to be invalid after agjk_shape_*() accepted it
- * (the support path's own tests then catch what it gives). The built-ins
- * are recognised through the weak references of the direct support path:
- * a program without ellipsoids links no ellipsoid code for this either. */
-/* Sum and largest of three numbers in [lo, AGJK_MAX_COORDINATE] (lo: 0
- * included or not): 1 with them, else 0 (NaN fails too). Non-negative, so
- * no absolute values: the same bits as v3_norm1 and v3_maxabs. */
+/* Sum and largest of three numbers in [0, AGJK_MAX_COORDINATE] (0 itself
+ * excluded unless zero_allowed): 1 with them, else 0 (NaN fails too).
+ * Non-negative, so no absolute values: the same bits as v3_norm1 and
+ * v3_maxabs. */
 static int extents(agjk_vec3 h, int zero_allowed, double *sum, double *largest) {
     int low = zero_allowed ? h.x >= 0.0 && h.y >= 0.0 && h.z >= 0.0
                            : h.x > 0.0 && h.y > 0.0 && h.z > 0.0;
@@ -24,6 +19,12 @@ static int extents(agjk_vec3 h, int zero_allowed, double *sum, double *largest) 
     return 1;
 }
 
+/* Bounds on the 1-norm (*l1) and the max norm (*max) of every support
+ * point of a built-in shape whose data bound them: 0 for another shape, or
+ * for data a caller changed to be invalid after agjk_shape_*() accepted it
+ * (the support path's own tests then catch what it gives). The built-ins
+ * are recognised through the weak references of the direct support path:
+ * a program without ellipsoids links no ellipsoid code for this either. */
 static int point_bounds(agjk_support_fn fn, const void *data, double *l1, double *max) {
 #if AGJK__DIRECT_SUPPORT
     if (fn == agjk__point_support) {

@@ -60,7 +60,6 @@ typedef struct agjk__minkowski {
     agjk_vec3 callback_point;
 } agjk__minkowski;
 
-
 /* Solver units keep support points below this (2^100): sixth powers stay finite. */
 #define AGJK__SOLVER_SIZE_LIMIT 0x1p100
 /* Directions handed to callbacks keep max |d_i| in [2^-60, 2^100] (or [1, 2^100]
@@ -92,7 +91,8 @@ double agjk__minkowski_rescale_extreme(agjk__minkowski *md, double size);
 agjk_vec3 agjk__minkowski_rescue_direction(const agjk__minkowski *md, agjk_vec3 d);
 void agjk__minkowski_points_slow(agjk__minkowski *md, agjk_vec3 *pa, agjk_vec3 *pb);
 
-/* Its part for ellipsoids (minkowski.c): from the shapes' data. */
+/* The part of agjk__minkowski_bound_points (below) that reads the shapes'
+ * data, for pairs with an ellipsoid (minkowski.c). */
 void agjk__minkowski_bound_points_from_data(agjk__minkowski *md);
 
 /* Directions handed to callbacks keep max |d_i| >= dmin from now on: records
@@ -133,7 +133,6 @@ static inline void agjk__minkowski_set_limits(agjk__minkowski *md) {
      * times its tiny coordinates would underflow and lose the sign. */
     agjk__minkowski_set_direction_min(md, md->scale > 1.0 ? 1.0 : AGJK__DIRECTION_MIN);
 }
-
 
 /* The smallest positive length in the caller's units (the least subnormal),
  * in solver units: a lower bound on a distance must exceed a few of these to
