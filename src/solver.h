@@ -43,9 +43,13 @@ void agjk__momentum_init(agjk__momentum *m, agjk_method method, agjk_vec3 x0, in
  * y_k = delta_k x_k + (1 - delta_k) s_{k-1},
  * d_k = delta_k d_{k-1} + (1 - delta_k) grad f(y_k). */
 static inline agjk_vec3 agjk__nesterov_mix(const agjk__momentum *m, int k, agjk_vec3 x) {
-    double delta = ((double)k + 1.0) / ((double)k + 3.0);
-    agjk_vec3 y = v3_lerp2(x, delta, m->s_prev, 1.0 - delta);
-    return v3_lerp2(m->d_prev, delta, y, 1.0 - delta);
+    double delta = ((double)k + 1.0) / ((double)k + 3.0), rest = 1.0 - delta;
+    /* Expanded, d_k = delta (1 - delta) x_k + c with c = delta d_{k-1} +
+     * (1 - delta)^2 s_{k-1}: c is ready before x_k, so x_k reaches d_k
+     * through one multiplication and one addition instead of two of each
+     * (GJK's chain of dependent steps, from one support to the next). */
+    agjk_vec3 c = v3_lerp2(m->d_prev, delta, m->s_prev, rest * rest);
+    return v3_add(v3_scale(x, delta * rest), c);
 }
 
 /* GJK++ (Montaut et al.): heavy-ball momentum on the direction,
