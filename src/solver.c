@@ -819,7 +819,10 @@ void agjk__solve(agjk__minkowski *md, const agjk__solve_input *in, agjk__solve_o
         out->a = out->b = v3(0.0, 0.0, 0.0);
         return;
     }
-    agjk__minkowski_bound_points(md);
+    /* Not for a query started from a guess (a cache's or a caller's): such
+     * queries are short (2.8 supports on moving ellipsoids), and reading an
+     * ellipsoid's data costs about as much as it then saves. */
+    if (!in->x0_given && in->warm_count == 0) agjk__minkowski_bound_points(md);
 
     sv.lambda[0] = 1.0;
     sv.lambda[1] = sv.lambda[2] = sv.lambda[3] = 0.0;
