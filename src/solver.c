@@ -599,6 +599,14 @@ static AGJK__NOINLINE int parallel(agjk_vec3 d, agjk_vec3 x) {
     if (d.x == x.x && d.y == x.y && d.z == x.z) return v3_maxabs(x) > 0.0;
     double md = v3_maxabs(d), mx = v3_maxabs(x);
     if (!(md > 0.0) || !(mx > 0.0) || !(v3_dot(d, x) > 0.0)) return 0;
+    /* The usual answer, "no" (a momentum direction), without the divisions:
+     * in this range nothing below under- or overflows, and a component of
+     * d x x above 2^-40 md mx stays far above the rounding of the unit-scaled
+     * product below (a few eps), which therefore is not zero either. */
+    if (md >= 0x1p-200 && md <= 0x1p200 && mx >= 0x1p-200 && mx <= 0x1p200) {
+        agjk_vec3 c = v3_cross(d, x);
+        if (v3_maxabs(c) > 0x1p-40 * (md * mx)) return 0;
+    }
     d = v3_div(d, md);
     x = v3_div(x, mx);
     if (tiny_nonzero(d.x) || tiny_nonzero(d.y) || tiny_nonzero(d.z) || tiny_nonzero(x.x) ||
