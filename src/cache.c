@@ -103,21 +103,6 @@ static int cache_of_pair(const agjk_cache *c, const agjk_shape *a, const agjk_sh
  * start). */
 static int sum_in_range(double sum) { return sum <= AGJK_MAX_COORDINATE; }
 
-/* 2 n1 - n0 for the unit directions n1 (last) and n0 (before), or n1; and
- * the weight of the result (see CACHE_DIRECTION_WEIGHT). */
-static agjk_vec3 extrapolate(agjk_vec3 last, agjk_vec3 before, double *weight) {
-    agjk_vec3 n1 = v3_normalize(last);
-    *weight = CACHE_DIRECTION_WEIGHT;
-    if (v3_maxabs(before) == 0.0) return n1;
-    agjk_vec3 n0 = v3_normalize(before);
-    double turn = v3_norm(v3_sub(n1, n0));
-    *weight = turn * 1000.0 <= CACHE_TURN_TRUST ? 1000.0
-              : turn * 10.0 >= CACHE_TURN_TRUST ? 10.0
-                                                 : CACHE_TURN_TRUST / turn;
-    agjk_vec3 p = v3_normalize(v3_sub(v3_scale(n1, 2.0), n0));
-    return v3_dot(p, n1) > 0.5 ? p : n1; /* a jump, not a steady turn */
-}
-
 /* The cached simplex is the last query's final one, every vertex with a
  * positive weight; after a small motion the origin usually still projects
  * into its interior (or, 4 points, lies inside it). Then the answer follows
@@ -176,16 +161,54 @@ static unsigned project_interior(const agjk_vec3 *w, int n, double lambda[4], ag
     return 0;
 }
 
+/* a's length, and its unit vector in *unit (a non-zero and in range): one
+ * square root and one division but for tiny vectors, whose squares would
+ * lose bits (those go through unit max-norm). */
+static double length_and_unit(agjk_vec3 a, agjk_vec3 *unit) {
+    double n2 = v3_norm2(a);
+    if (n2 >= 0x1p-900) {
+        double n = sqrt(n2);
+        *unit = v3_scale(a, 1.0 / n);
+        return n;
+    }
+    double m = v3_maxabs(a);
+    agjk_vec3 b = v3_div(a, m);
+    double n = v3_norm(b);
+    *unit = v3_scale(b, 1.0 / n);
+    return m * n;
+}
+
 /* The start from the cache's direction alone (curved shapes, or a simplex
- * that cannot serve): x_0 extrapolated from the last two directions. */
+ * that cannot serve): x_0 = weight ||n_1|| p, p the unit vector along
+ * 2 n_1 - n_0 (the last two directions, unit, extrapolated linearly), or n_1
+ * itself after a jump rather than a steady turn (<p, n_1> <= 1/2), with the
+ * weight of CACHE_DIRECTION_WEIGHT's comment. With t = |n_1 - n_0| and
+ * q = 2 n_1 - n_0,
+ * weight / |q| = CACHE_TURN_TRUST / sqrt(t^2 |q|^2): three square roots and
+ * three divisions in all, two of each side by side. */
 static int load_direction(const agjk_cache *cache, agjk__solve_input *in, int has_direction) {
     if (!has_direction) return 1;
-    double weight;
-    agjk_vec3 dir = extrapolate(cache->direction, cache->direction_prev, &weight);
-    /* ||direction|| from its unit multiple (a tiny direction's square
-     * underflows): x_0 must not be zero. */
-    double m = v3_maxabs(cache->direction);
-    agjk_vec3 x0 = v3_scale(dir, weight * (m * v3_norm(v3_div(cache->direction, m))));
+    agjk_vec3 n1, n0;
+    double length = length_and_unit(cache->direction, &n1);
+    agjk_vec3 x0 = v3_scale(n1, CACHE_DIRECTION_WEIGHT * length);
+    if (v3_maxabs(cache->direction_prev) > 0.0) {
+        length_and_unit(cache->direction_prev, &n0);
+        double t2 = v3_norm2(v3_sub(n1, n0));
+        agjk_vec3 q = v3_sub(v3_scale(n1, 2.0), n0); /* |q| >= 1 */
+        double qq = v3_norm2(q), qn = v3_dot(q, n1);
+        /* weight = CACHE_TURN_TRUST / t within [10, 1000] */
+        int slow = t2 * 1e6 <= CACHE_TURN_TRUST * CACHE_TURN_TRUST,
+            fast = t2 * 1e2 >= CACHE_TURN_TRUST * CACHE_TURN_TRUST;
+        if (qn > 0.0 && 4.0 * qn * qn > qq) {
+            double f = slow ? 1000.0 / sqrt(qq)
+                       : fast ? 10.0 / sqrt(qq)
+                              : CACHE_TURN_TRUST / sqrt(t2 * qq);
+            x0 = v3_scale(q, f * length);
+        } else {
+            double weight = slow ? 1000.0 : fast ? 10.0 : CACHE_TURN_TRUST / sqrt(t2);
+            x0 = v3_scale(n1, weight * length);
+        }
+    }
     if (v3_maxabs(x0) > 0.0) {
         in->x0 = x0;
         in->x0_given = 1;
