@@ -520,14 +520,16 @@ static unsigned tetra_edge(const agjk_vec3 *w, int i, int j, int k, double gii, 
  * other cases are left to the exhaustive projection. The edges e_i = w_i - a
  * and their squared lengths gd[i] come from the caller, which has them. */
 static unsigned tetra_inside(const agjk_vec3 *w, const agjk_vec3 *e, const double *gd,
-                             double lambda[4], agjk_vec3 *point) {
+                             double lambda[4], agjk_vec3 *point, agjk__inside *inside) {
     agjk_vec3 a = w[3];
     agjk_vec3 e0 = e[0], e1 = e[1], e2 = e[2];
     double g00 = gd[0], g11 = gd[1], g22 = gd[2];
     agjk_vec3 c12 = v3_cross(e1, e2), c20 = v3_cross(e2, e0), c01 = v3_cross(e0, e1);
     double vol = v3_dot(e0, c12);
     double n0 = -v3_dot(a, c12), n1 = -v3_dot(a, c20), n2 = -v3_dot(a, c01);
+    double orientation = 1.0;
     if (vol < 0.0) {
+        orientation = -1.0;
         vol = -vol;
         n0 = -n0;
         n1 = -n1;
@@ -545,6 +547,16 @@ static unsigned tetra_inside(const agjk_vec3 *w, const agjk_vec3 *e, const doubl
     lambda[2] = n2 * inv;
     lambda[3] = na * inv;
     *point = v3(0.0, 0.0, 0.0);
+    if (inside) {
+        inside->h[0] = n0;
+        inside->h[1] = n1;
+        inside->h[2] = n2;
+        inside->g[0] = g00;
+        inside->g[1] = g11;
+        inside->g[2] = g22;
+        inside->orientation = orientation;
+        inside->valid = 1;
+    }
     return 0xFu;
 }
 
@@ -564,7 +576,8 @@ static unsigned thin_face(const agjk_vec3 *w, int taken, double lambda[4], agjk_
 }
 
 static unsigned gjk_tetrahedron(const agjk_vec3 *w, int exhaustive, double lambda[4],
-                                agjk_vec3 *point) {
+                                agjk_vec3 *point, agjk__inside *inside) {
+    if (inside) inside->valid = 0;
     agjk_vec3 a = w[3];
     agjk_vec3 e[3];
     e[0] = v3_sub(w[0], a);
@@ -600,7 +613,7 @@ static unsigned gjk_tetrahedron(const agjk_vec3 *w, int exhaustive, double lambd
      * face or edge passes its KKT test, so the order changes no answer, and
      * the last step skips two faces and three edges (overlapping ellipsoids:
      * about 150 instructions per query). */
-    if (!mask && inward) mask = tetra_inside(w, e, gd, lambda, point);
+    if (!mask && inward) mask = tetra_inside(w, e, gd, lambda, point, inside);
     if (!mask && !taken)
         mask = tetra_face(w, e, gd, gx, r, back == 0 ? 1 : 0, &taken, &ignored, lambda, point);
     if (!mask && !taken)
@@ -612,7 +625,7 @@ static unsigned gjk_tetrahedron(const agjk_vec3 *w, int exhaustive, double lambd
         if (!mask)
             mask = tetra_edge(w, 2, 0, 1, gd[2], gx[1], gx[0], r[2], r[0], r[1], lambda, point);
         /* GJK's last step on overlapping shapes: the origin enclosed. */
-        if (!mask) mask = tetra_inside(w, e, gd, lambda, point);
+        if (!mask) mask = tetra_inside(w, e, gd, lambda, point, inside);
     }
     if (!mask && taken) mask = thin_face(w, taken, lambda, point);
     return mask ? mask : decline(w, 4, exhaustive, lambda, point);
@@ -624,16 +637,21 @@ unsigned agjk__simplex_project_gjk_fast(const agjk_vec3 *w, int n, double lambda
     case 1: return vertex_output(w, 1, lambda, point);
     case 2: return gjk_segment(w, 0, lambda, point);
     case 3: return gjk_triangle(w, 0, lambda, point);
-    default: return gjk_tetrahedron(w, 0, lambda, point);
+    default: return gjk_tetrahedron(w, 0, lambda, point, NULL);
     }
 }
 
-unsigned agjk__simplex_project_gjk(const agjk_vec3 *w, int n, double lambda[4], agjk_vec3 *point) {
+unsigned agjk__simplex_project_gjk_inside(const agjk_vec3 *w, int n, double lambda[4],
+                                          agjk_vec3 *point, agjk__inside *inside) {
     /* Largest first: a tetrahedron is the usual case on curved shapes. */
-    if (n >= 4) return gjk_tetrahedron(w, 1, lambda, point);
+    if (n >= 4) return gjk_tetrahedron(w, 1, lambda, point, inside);
     if (n == 3) return gjk_triangle(w, 1, lambda, point);
     if (n == 2) return gjk_segment(w, 1, lambda, point);
     return vertex_output(w, 1, lambda, point);
+}
+
+unsigned agjk__simplex_project_gjk(const agjk_vec3 *w, int n, double lambda[4], agjk_vec3 *point) {
+    return agjk__simplex_project_gjk_inside(w, n, lambda, point, NULL);
 }
 
 agjk_status agjk_simplex_project_origin(const agjk_vec3 *vertices, int count,

@@ -23,6 +23,23 @@ unsigned agjk__simplex_project(const agjk_vec3 *p, int n, double lambda[4], agjk
  * for any finite input, in any order. */
 unsigned agjk__simplex_project_gjk(const agjk_vec3 *w, int n, double lambda[4], agjk_vec3 *point);
 
+/* What the fast path's inside test knew when it found the origin inside the
+ * tetrahedron w[0..3] (w[3] the newest point, e_i = w_i - w_3): for the face
+ * without w_i (i < 3), h[i] = -<w_3, e_j x e_k> oriented to be positive (the
+ * origin's depth below that face times twice its area, from the edges at
+ * w_3), g[i] = |e_i|^2, and `orientation` the sign (+1 or -1) that turned
+ * them: the sign of det(e_0, e_1, e_2). valid = 0 when the answer came
+ * another way (the overlap certification then does its own tests). */
+typedef struct agjk__inside {
+    double h[3], g[3], orientation;
+    int valid;
+} agjk__inside;
+
+/* agjk__simplex_project_gjk, and *inside as above (inside->valid is set
+ * either way, for n = 4; left alone for smaller n). */
+unsigned agjk__simplex_project_gjk_inside(const agjk_vec3 *w, int n, double lambda[4],
+                                          agjk_vec3 *point, agjk__inside *inside);
+
 /* The fast path of agjk__simplex_project_gjk alone: the same output when it
  * finds a candidate that passes the optimality check, else 0 with lambda and
  * *point unspecified (for tests and measurements of the fallback rate). */

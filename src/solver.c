@@ -45,6 +45,7 @@ typedef struct solver {
     agjk_vec3 x;
     double x2;          /* ||x||^2 */
     agjk__momentum m;
+    agjk__inside inside;  /* the last tetrahedron projection's inside test */
     double abs_tolerance; /* absolute mode: the tolerance in solver units squared */
     double lie_factor;    /* a gap below -lie_factor ||x|| noise proves a lying support */
     int sign_budget;      /* iterations left to decide the sign after the tolerance */
@@ -296,6 +297,28 @@ static unsigned shallow_faces(const agjk_vec3 w[4], double noise) {
     return shallow;
 }
 
+/* shallow_faces(w, noise) == 0, sooner, from what the simplex's inside
+ * test computed on its way to the enclosure (agjk__inside): the faces
+ * through w[3] have their h from the edges at w[3], as the precise test
+ * above takes them, and |k| <= |e_j| |e_k| (for the absolute values as for
+ * the edges), so h^2 > (DEPTH_FACTOR noise)^2 g_j g_k, with 1% more for the
+ * rounding of g, passes that test wherever it holds. The fourth face gets
+ * the precise test itself. Either way the verdict is shallow_faces' (which
+ * decides whatever this leaves open): it saves three cross products and most
+ * of the products at the last step of an overlapping query. */
+static int deep_enclosure(const agjk__inside *in, const agjk_vec3 w[4], double noise) {
+    if (!in->valid) return 0;
+    double limit = DEPTH_FACTOR * noise;
+    limit = 1.01 * limit * limit;
+    const double *h = in->h, *g = in->g;
+    if (!(h[0] * h[0] > limit * g[1] * g[2] && h[1] * h[1] > limit * g[2] * g[0] &&
+          h[2] * h[2] > limit * g[0] * g[1]))
+        return 0;
+    /* The face without w[3], as tetra_faces[3] lists it, oriented as the rest. */
+    agjk_vec3 e1 = v3_sub(w[2], w[0]), e2 = v3_sub(w[1], w[0]);
+    return beyond_rounding(-in->orientation * v3_dot(w[0], v3_cross(e1, e2)), e1, e2, noise);
+}
+
 /* The same test for any set of points: every triple's plane through the
  * origin has points beyond the margin on both sides. Returns 1 when so; else
  * 0 with *shallow the normal of a plane with too little on its side (zero
@@ -523,7 +546,7 @@ static int update_simplex(solver *sv, const agjk__vertex *s, agjk_vec3 *x) {
     }
     ++n;
     double l[4];
-    unsigned mask = agjk__simplex_project_gjk(sv->w, n, l, x);
+    unsigned mask = agjk__simplex_project_gjk_inside(sv->w, n, l, x, &sv->inside);
     if (mask == 0xFu) {
         for (int i = 0; i < 4; ++i) sv->lambda[i] = l[i];
         sv->count = 4;
@@ -997,7 +1020,8 @@ void agjk__solve(agjk__minkowski *md, const agjk__solve_input *in, agjk__solve_o
             /* The origin in the simplex, or within rounding of it: certified
              * if it lies deep inside the points (with a few more if needed). */
             core_overlap = (at_origin && noise == 0.0) ||
-                           (enclosed && shallow_faces(sv.w, noise) == 0) ||
+                           (enclosed && (deep_enclosure(&sv.inside, sv.w, noise) ||
+                                         shallow_faces(sv.w, noise) == 0)) ||
                            certify_overlap(&sv, out, NULL);
             if (md->bad_support) {
                 out->outcome = AGJK__BAD_SUPPORT;
