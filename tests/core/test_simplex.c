@@ -350,6 +350,52 @@ typedef struct gjk_counts {
     long calls[5], fast[5];
 } gjk_counts;
 
+/* Tetrahedra whose inside test reported its data (check_inside). */
+static long inside_reported;
+
+/* det(p, q, r) in long double. */
+static long double det_l(agjk_vec3 p, agjk_vec3 q, agjk_vec3 r) {
+    return (long double)p.x * ((long double)q.y * r.z - (long double)q.z * r.y) -
+           (long double)p.y * ((long double)q.x * r.z - (long double)q.z * r.x) +
+           (long double)p.z * ((long double)q.x * r.y - (long double)q.y * r.x);
+}
+
+/* agjk__simplex_project_gjk_inside on a tetrahedron: the same answer, bit
+ * for bit, as agjk__simplex_project_gjk (mask, weights), and when it reports
+ * its inside test's data, an enclosure (mask 0xF) whose depth numerators,
+ * squared edge lengths and orientation match a long-double computation
+ * from the same points (the solver certifies overlaps with them). */
+static void check_inside(const agjk_vec3 *w, unsigned mask, const double l[4], const char *what,
+                         int i) {
+    agjk__inside in;
+    in.valid = -1;
+    double li[4];
+    agjk_vec3 pi;
+    unsigned mi = agjk__simplex_project_gjk_inside(w, 4, li, &pi, &in);
+    TU_ENSURE(mi == mask && memcmp(li, l, sizeof li) == 0, "%s %d: the inside variant answers "
+              "mask 0x%x, plain 0x%x", what, i, mi, mask);
+    TU_ENSURE(in.valid == 0 || in.valid == 1, "%s %d: inside.valid %d", what, i, in.valid);
+    if (!in.valid) return;
+    ++inside_reported;
+    TU_ENSURE(mask == 0xFu, "%s %d: inside data with mask 0x%x", what, i, mask);
+    agjk_vec3 a = w[3], e[3] = {tu_sub(w[0], a), tu_sub(w[1], a), tu_sub(w[2], a)};
+    long double vol = det_l(e[0], e[1], e[2]);
+    TU_ENSURE(in.orientation == (vol < 0 ? -1.0 : 1.0), "%s %d: orientation %g, volume %Lg", what,
+              i, in.orientation, vol);
+    for (int f = 0; f < 3; ++f) {
+        int j = (f + 1) % 3, k = (f + 2) % 3;
+        long double h = -(long double)in.orientation * det_l(a, e[j], e[k]);
+        long double scale = (long double)tu_norm(a) * tu_norm(e[j]) * tu_norm(e[k]);
+        TU_ENSURE(h > 0 && fabsl((long double)in.h[f] - h) <= 16 * DBL_EPSILON * scale,
+                  "%s %d: face %d depth numerator %.17g, long double %.17Lg", what, i, f,
+                  in.h[f], h);
+        long double g = (long double)e[f].x * e[f].x + (long double)e[f].y * e[f].y +
+                        (long double)e[f].z * e[f].z;
+        TU_ENSURE(fabsl((long double)in.g[f] - g) <= 4 * DBL_EPSILON * g,
+                  "%s %d: |e_%d|^2 %.17g, long double %.17Lg", what, i, f, in.g[f], g);
+    }
+}
+
 /* Runs agjk__simplex_project_gjk and its fast path alone on w[0..n-1] (the
  * newest point last) and checks both against the reference; the fast path
  * may decline (return 0), never be wrong. Returns the mask of the full
@@ -378,6 +424,7 @@ static unsigned check_gjk(const agjk_vec3 *w, int n, const char *what, int i, gj
         check_internal(w, n, what, i, mf, lf, pf, &ref);
         TU_ENSURE(mf == mask, "%s %d: fast mask 0x%x, full 0x%x", what, i, mf, mask);
     }
+    if (n == 4) check_inside(w, mask, l, what, i);
     for (int k = 0; k < 4; k++) lambda[k] = l[k];
     *point = p;
     return mask;
@@ -389,7 +436,7 @@ static void print_counts(const char *what, const gjk_counts *c) {
         if (c->calls[n])
             printf("  n=%d %ld/%ld (fallback %.2f%%)", n, c->fast[n], c->calls[n],
                    100.0 * (double)(c->calls[n] - c->fast[n]) / (double)c->calls[n]);
-    printf("\n");
+    printf("; inside data %ld\n", inside_reported);
 }
 
 START_TEST(gjk_random_simplices) {
@@ -555,6 +602,8 @@ START_TEST(gjk_like_runs) {
         }
     }
     print_counts("gjk_like_runs", &counts);
+    /* GJK's last step on overlapping shapes is among these runs. */
+    TU_ENSURE(inside_reported > 0, "no enclosure reported by the inside test");
     /* GJK's own simplices: the fallback is the exception (origin inside,
      * degenerate or ill-conditioned simplices). */
     for (int n = 2; n <= 4; n++)
