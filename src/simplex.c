@@ -555,7 +555,7 @@ static unsigned tetra_inside(const agjk_vec3 *w, const agjk_vec3 *e, const doubl
         inside->g[1] = g11;
         inside->g[2] = g22;
         inside->orientation = orientation;
-        inside->valid = 1;
+        return 0xFu | AGJK__INSIDE_REPORTED;
     }
     return 0xFu;
 }
@@ -577,7 +577,6 @@ static unsigned thin_face(const agjk_vec3 *w, int taken, double lambda[4], agjk_
 
 static unsigned gjk_tetrahedron(const agjk_vec3 *w, int exhaustive, double lambda[4],
                                 agjk_vec3 *point, agjk__inside *inside) {
-    if (inside) inside->valid = 0;
     agjk_vec3 a = w[3];
     agjk_vec3 e[3];
     e[0] = v3_sub(w[0], a);

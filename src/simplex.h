@@ -28,15 +28,19 @@ unsigned agjk__simplex_project_gjk(const agjk_vec3 *w, int n, double lambda[4], 
  * without w_i (i < 3), h[i] = -<w_3, e_j x e_k> oriented to be positive (the
  * origin's depth below that face times twice its area, from the edges at
  * w_3), g[i] = |e_i|^2, and `orientation` the sign (+1 or -1) that turned
- * them: the sign of det(e_0, e_1, e_2). valid = 0 when the answer came
- * another way (the overlap certification then does its own tests). */
+ * them: the sign of det(e_0, e_1, e_2). */
 typedef struct agjk__inside {
     double h[3], g[3], orientation;
-    int valid;
 } agjk__inside;
 
-/* agjk__simplex_project_gjk, and *inside as above (inside->valid is set
- * either way, for n = 4; left alone for smaller n). */
+/* Set in the mask (with the four vertex bits) by
+ * agjk__simplex_project_gjk_inside when it wrote *inside. */
+#define AGJK__INSIDE_REPORTED 0x10u
+
+/* agjk__simplex_project_gjk, and *inside as above when the enclosure came
+ * from that test (the mask then has AGJK__INSIDE_REPORTED too; otherwise
+ * *inside is not written, and the overlap certification does its own
+ * tests). */
 unsigned agjk__simplex_project_gjk_inside(const agjk_vec3 *w, int n, double lambda[4],
                                           agjk_vec3 *point, agjk__inside *inside);
 

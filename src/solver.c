@@ -45,7 +45,8 @@ typedef struct solver {
     agjk_vec3 x;
     double x2;          /* ||x||^2 */
     agjk__momentum m;
-    agjk__inside inside;  /* the last tetrahedron projection's inside test */
+    agjk__inside inside;  /* the enclosure's inside test, when inside_reported */
+    int inside_reported;
     double abs_tolerance; /* absolute mode: the tolerance in solver units squared */
     double lie_factor;    /* a gap below -lie_factor ||x|| noise proves a lying support */
     int sign_budget;      /* iterations left to decide the sign after the tolerance */
@@ -306,8 +307,10 @@ static unsigned shallow_faces(const agjk_vec3 w[4], double noise) {
  * the precise test itself. Either way the verdict is shallow_faces' (which
  * decides whatever this leaves open): it saves three cross products and most
  * of the products at the last step of an overlapping query. */
-static int deep_enclosure(const agjk__inside *in, const agjk_vec3 w[4], double noise) {
-    if (!in->valid) return 0;
+static int deep_enclosure(const solver *sv, double noise) {
+    if (!sv->inside_reported) return 0;
+    const agjk__inside *in = &sv->inside;
+    const agjk_vec3 *w = sv->w;
     double limit = DEPTH_FACTOR * noise;
     limit = 1.01 * limit * limit;
     const double *h = in->h, *g = in->g;
@@ -547,7 +550,8 @@ static int update_simplex(solver *sv, const agjk__vertex *s, agjk_vec3 *x) {
     ++n;
     double l[4];
     unsigned mask = agjk__simplex_project_gjk_inside(sv->w, n, l, x, &sv->inside);
-    if (mask == 0xFu) {
+    if ((mask & 0xFu) == 0xFu) {
+        sv->inside_reported = (mask & AGJK__INSIDE_REPORTED) != 0;
         for (int i = 0; i < 4; ++i) sv->lambda[i] = l[i];
         sv->count = 4;
         return 1;
@@ -1020,7 +1024,7 @@ void agjk__solve(agjk__minkowski *md, const agjk__solve_input *in, agjk__solve_o
             /* The origin in the simplex, or within rounding of it: certified
              * if it lies deep inside the points (with a few more if needed). */
             core_overlap = (at_origin && noise == 0.0) ||
-                           (enclosed && (deep_enclosure(&sv.inside, sv.w, noise) ||
+                           (enclosed && (deep_enclosure(&sv, noise) ||
                                          shallow_faces(sv.w, noise) == 0)) ||
                            certify_overlap(&sv, out, NULL);
             if (md->bad_support) {
