@@ -305,4 +305,21 @@ static AGJK__ALWAYS_INLINE void agjk__minkowski_support(agjk__minkowski *md, agj
     out->b = b;
 }
 
+/* Alg. 2: the plane of normal d through s separates D (inflated by the margins)
+ * from the origin when <d, s> > ||d|| (margin + rounding): squared, with no
+ * square root, when d has a safe size (the support path keeps directions in
+ * [2^-60, 2^100], so this is the common case). */
+static inline int agjk__minkowski_separates(const agjk__minkowski *md, agjk_vec3 d,
+                                            agjk_vec3 w) {
+    double r = md->margin + md->noise;
+    double dm = v3_maxabs(d);
+    if (dm >= AGJK__DIRECTION_MIN && dm <= AGJK__DIRECTION_MAX) {
+        double dw = v3_dot(d, w);
+        return dw > 0.0 && dw * dw > v3_norm2(d) * r * r;
+    }
+    /* The unit direction, as the support function saw it: a denormal d has
+     * too few significant bits for <d, w> to mean anything. */
+    return v3_dot(v3_normalize(d), w) > r;
+}
+
 #endif

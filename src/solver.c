@@ -92,22 +92,6 @@ static AGJK__NOINLINE void support_rare(solver *sv, agjk_vec3 *d, agjk__vertex *
     support(sv, d, 0.0, s, 0);
 }
 
-/* Alg. 2: the plane of normal d through s separates D (inflated by the margins)
- * from the origin when <d, s> > ||d|| (margin + rounding): squared, with no
- * square root, when d has a safe size (the support path keeps directions in
- * [2^-60, 2^100], so this is the common case). */
-static int separates(const agjk__minkowski *md, agjk_vec3 d, agjk_vec3 w) {
-    double r = md->margin + md->noise;
-    double dm = v3_maxabs(d);
-    if (dm >= AGJK__DIRECTION_MIN && dm <= AGJK__DIRECTION_MAX) {
-        double dw = v3_dot(d, w);
-        return dw > 0.0 && dw * dw > v3_norm2(d) * r * r;
-    }
-    /* The unit direction, as the support function saw it: a denormal d has
-     * too few significant bits for <d, w> to mean anything. */
-    return v3_dot(v3_normalize(d), w) > r;
-}
-
 /* Checks a fresh support s in direction d: a bad callback output ends the
  * query, and in Boolean mode so does a separating plane (Alg. 2). Returns 1
  * when the loop must stop, with out->outcome set. */
@@ -117,7 +101,7 @@ static AGJK__NOINLINE int support_ends_query_slow(const solver *sv, agjk_vec3 d,
         out->outcome = AGJK__BAD_SUPPORT;
         return 1;
     }
-    if (separates(sv->md, d, s->w)) {
+    if (agjk__minkowski_separates(sv->md, d, s->w)) {
         out->outcome = AGJK__SEPARATED_EARLY;
         out->direction = d;
         return 1;
@@ -736,37 +720,22 @@ static int warm_consistent(const agjk_vec3 *w, int count, agjk_vec3 d, const agj
     return 1;
 }
 
-/* The first support, in direction x_0 for every method (d_{-1} = s_{-1} = x_0
- * gives d_0 = x_0), also tells the problem's size: from then on the solver
- * works in units where it is about 1 (agjk__minkowski_set_scale). */
-static void first_support(solver *sv, agjk__vertex *s, agjk__solve_output *out) {
-    agjk__minkowski *md = sv->md;
-    agjk_vec3 x = sv->in->x0;
-    /* The problem's size is not known yet: give the callbacks a unit-size
-     * direction (exact power-of-two scaling of x_0). */
-    agjk__minkowski_support(md, v3_scale_to_unit(x, v3_maxabs(x)), 0.0, s, 1);
+/* Iteration 0's support (agjk__solve_start: it also settles the problem's
+ * scale), the caller's or taken here, and the solver's state from it. */
+static void first_support(solver *sv, agjk__vertex *s, agjk__solve_output *out,
+                          const agjk__start *start) {
+    if (start) {
+        *s = start->s;
+        sv->x = start->x;
+    } else {
+        agjk__start own;
+        agjk__solve_start(sv->md, sv->in, &own);
+        *s = own.s;
+        sv->x = own.x;
+    }
+    sv->x2 = v3_norm2(sv->x);
+    sv->abs_tolerance = sv->in->tolerance * sv->md->scale * sv->md->scale;
     ++out->support_calls;
-    /* A shrink during that first call already put s in new units; x_0, given
-     * in the caller's units, needs it too. */
-    double shrunk = md->rescaled;
-    md->rescaled = 1.0;
-    double f = agjk__minkowski_set_scale(md);
-    if (f != 1.0) {
-        s->w = v3_scale(s->w, f);
-        s->a = v3_scale(s->a, f);
-        s->b = v3_scale(s->b, f);
-    }
-    if (shrunk != 1.0 || f != 1.0) {
-        agjk_vec3 x_units = v3_scale(v3_scale(x, shrunk), f);
-        /* A guess far off the problem's size (a caller's, or a denormal offset
-         * that underflows when scaled) only gives a direction. */
-        if (!v3_in_range(x_units) || v3_maxabs(x_units) < 1.0 / AGJK_MAX_COORDINATE)
-            x_units = v3_normalize(x);
-        x = x_units;
-    }
-    sv->x = x;
-    sv->x2 = v3_norm2(x);
-    sv->abs_tolerance = sv->in->tolerance * md->scale * md->scale;
 }
 
 /* The solver's output from its final state: the iterate, a member point of
@@ -825,7 +794,8 @@ static int warm_certified(solver *sv, agjk_vec3 d, const agjk__vertex *s,
     return 1;
 }
 
-void agjk__solve(agjk__minkowski *md, const agjk__solve_input *in, agjk__solve_output *out) {
+void agjk__solve_from(agjk__minkowski *md, const agjk__solve_input *in, const agjk__start *start,
+                      agjk__solve_output *out) {
     solver sv;
     sv.md = md;
     sv.in = in;
@@ -844,9 +814,10 @@ void agjk__solve(agjk__minkowski *md, const agjk__solve_input *in, agjk__solve_o
 
     /* Iteration 0's support, and its tests, before any other set-up: distant
      * shapes in Boolean mode end here (a separating plane at once, as in
-     * Alg. 2), paying for no simplex or momentum work. */
+     * Alg. 2; without a cache the caller has answered them already), paying
+     * for no simplex or momentum work. */
     agjk__vertex s;
-    first_support(&sv, &s, out);
+    first_support(&sv, &s, out, start);
     agjk_vec3 d0 = sv.x; /* direction of the first support */
     if (support_ends_query(&sv, d0, &s, out)) {
         out->x = out->x_member = sv.x;

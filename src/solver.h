@@ -188,6 +188,62 @@ typedef struct agjk__solve_output {
     int flat;            /* a point of A or B came back (flat faces), for the cache */
 } agjk__solve_output;
 
-void agjk__solve(agjk__minkowski *md, const agjk__solve_input *in, agjk__solve_output *out);
+/* Iteration 0's outcome: the support point s, the direction x it was taken
+ * in (x_0 in solver units), and in Boolean mode whether its plane already
+ * separates the shapes (Alg. 2). */
+typedef struct agjk__start {
+    agjk__vertex s;
+    agjk_vec3 x;
+    int separated;
+} agjk__start;
+
+/* Iteration 0: the support in direction x_0 for every method (d_{-1} =
+ * s_{-1} = x_0 gives d_0 = x_0), which also tells the problem's size: from
+ * then on the solver works in units where it is about 1
+ * (agjk__minkowski_set_scale). Returns start->separated. A separated start
+ * ends the query before the solver sets anything up: its caller can answer
+ * from `start` alone (a tenth of a one-support query's instructions; inline,
+ * so that the point stays in registers). */
+static AGJK__ALWAYS_INLINE int agjk__solve_start(agjk__minkowski *md, const agjk__solve_input *in,
+                                                 agjk__start *start) {
+    agjk_vec3 x = in->x0;
+    agjk__vertex *s = &start->s;
+    /* The problem's size is not known yet: give the callbacks a unit-size
+     * direction (exact power-of-two scaling of x_0). */
+    agjk__minkowski_support(md, v3_scale_to_unit(x, v3_maxabs(x)), 0.0, s, 1);
+    /* A shrink during that first call already put s in new units; x_0, given
+     * in the caller's units, needs it too. */
+    double shrunk = md->rescaled;
+    md->rescaled = 1.0;
+    double f = agjk__minkowski_set_scale(md);
+    if (f != 1.0) {
+        s->w = v3_scale(s->w, f);
+        s->a = v3_scale(s->a, f);
+        s->b = v3_scale(s->b, f);
+    }
+    if (shrunk != 1.0 || f != 1.0) {
+        agjk_vec3 x_units = v3_scale(v3_scale(x, shrunk), f);
+        /* A guess far off the problem's size (a caller's, or a denormal offset
+         * that underflows when scaled) only gives a direction. */
+        if (!v3_in_range(x_units) || v3_maxabs(x_units) < 1.0 / AGJK_MAX_COORDINATE)
+            x_units = v3_normalize(x);
+        x = x_units;
+    }
+    start->x = x;
+    start->separated =
+        in->boolean_mode && !md->bad_support && agjk__minkowski_separates(md, x, s->w);
+    return start->separated;
+}
+
+/* The solver from iteration 0's support on: `start` (for a separated start
+ * it only writes the early exit's output), or when NULL, the whole run. */
+void agjk__solve_from(agjk__minkowski *md, const agjk__solve_input *in, const agjk__start *start,
+                      agjk__solve_output *out);
+
+/* The whole query's solver run. */
+static inline void agjk__solve(agjk__minkowski *md, const agjk__solve_input *in,
+                               agjk__solve_output *out) {
+    agjk__solve_from(md, in, NULL, out);
+}
 
 #endif
