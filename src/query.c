@@ -52,22 +52,26 @@ agjk_status agjk__query_run(const agjk_shape *a, const agjk_pose *pose_a, const 
     in.want_simplex = cache != NULL;
     if (cache) hooks->load(cache, a, b, &md, &in); /* warm start (cache.c) */
 
-    /* Iteration 0's support, here: in Boolean mode distant shapes end on its
-     * plane (Alg. 2), answered from it alone, before the solver sets
+    /* In Boolean mode, iteration 0's support is taken here: distant shapes end
+     * on its plane (Alg. 2), answered from it alone, before the solver sets
      * anything up (a cache records the solver's output, so cached queries
-     * take the solver's path for that end too). */
-    agjk__start start;
-    if (agjk__solve_start(&md, &in, &start) && !cache) {
-        result->iterations = 1;
-        result->support_calls = 1;
-        result->hint_a = md.hint_a;
-        result->hint_b = md.hint_b;
-        agjk_vec3 n = v3_normalize(v3_neg(start.x));
-        result->normal = m3_mul(&pose_a->rotation[0][0], n);
-        return result->status = AGJK_STATUS_SEPARATED;
+     * take the solver's path for that end too). Distance queries leave it to
+     * the solver, which then keeps its point in registers. */
+    agjk__start start, *first = NULL;
+    if (boolean_mode) {
+        first = &start;
+        if (agjk__solve_start(&md, &in, &start) && !cache) {
+            result->iterations = 1;
+            result->support_calls = 1;
+            result->hint_a = md.hint_a;
+            result->hint_b = md.hint_b;
+            agjk_vec3 n = v3_normalize(v3_neg(start.x));
+            result->normal = m3_mul(&pose_a->rotation[0][0], n);
+            return result->status = AGJK_STATUS_SEPARATED;
+        }
     }
     agjk__solve_output out;
-    agjk__solve_from(&md, &in, &start, &out);
+    agjk__solve_from(&md, &in, first, &out);
     if (cache) {
         if (out.outcome == AGJK__BAD_SUPPORT) hooks->reset(cache);
         else hooks->save(cache, a, b, &md, &in, &out);

@@ -721,11 +721,18 @@ static int warm_consistent(const agjk_vec3 *w, int count, agjk_vec3 d, const agj
 }
 
 /* Iteration 0's support (agjk__solve_start: it also settles the problem's
- * scale), taken by the caller, and the solver's state from it. */
+ * scale), the caller's or taken here, and the solver's state from it. */
 static void first_support(solver *sv, agjk__vertex *s, agjk__solve_output *out,
                           const agjk__start *start) {
-    *s = start->s;
-    sv->x = start->x;
+    if (start) {
+        *s = start->s;
+        sv->x = start->x;
+    } else {
+        agjk__start own;
+        agjk__solve_start(sv->md, sv->in, &own);
+        *s = own.s;
+        sv->x = own.x;
+    }
     sv->x2 = v3_norm2(sv->x);
     sv->abs_tolerance = sv->in->tolerance * sv->md->scale * sv->md->scale;
     ++out->support_calls;

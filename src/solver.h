@@ -235,17 +235,15 @@ static AGJK__ALWAYS_INLINE int agjk__solve_start(agjk__minkowski *md, const agjk
     return start->separated;
 }
 
-/* The solver from iteration 0's support on (for a separated start it only
- * writes the early exit's output). */
+/* The solver from iteration 0's support on: `start` (for a separated start
+ * it only writes the early exit's output), or when NULL, the whole run. */
 void agjk__solve_from(agjk__minkowski *md, const agjk__solve_input *in, const agjk__start *start,
                       agjk__solve_output *out);
 
 /* The whole query's solver run. */
 static inline void agjk__solve(agjk__minkowski *md, const agjk__solve_input *in,
                                agjk__solve_output *out) {
-    agjk__start start;
-    agjk__solve_start(md, in, &start);
-    agjk__solve_from(md, in, &start, out);
+    agjk__solve_from(md, in, NULL, out);
 }
 
 #endif
