@@ -35,10 +35,16 @@ static agjk_vec3 v3_load_scalars(const agjk_vec3 *p) {
     return v3(q[0], q[1], q[2]);
 }
 
-agjk_status agjk__query_run(const agjk_shape *a, const agjk_pose *pose_a, const agjk_shape *b,
-                            const agjk_pose *pose_b, const agjk_options *options,
-                            agjk_result *result, int boolean_mode, struct agjk_cache *cache,
-                            const agjk__warm_hooks *hooks) {
+/* The query, compiled once per entry point: agjk_distance() and
+ * agjk_collide() each get a copy with their mode and no cache folded in, so
+ * that a program calling only one of them links neither the other's code
+ * (the Boolean exit's inline first support, about 3.7 KB) nor the cache's
+ * branches; the cached queries share the general one (agjk__query_run). */
+static AGJK__ALWAYS_INLINE agjk_status run_query(const agjk_shape *a, const agjk_pose *pose_a,
+                                                 const agjk_shape *b, const agjk_pose *pose_b,
+                                                 const agjk_options *options, agjk_result *result,
+                                                 int boolean_mode, struct agjk_cache *cache,
+                                                 const agjk__warm_hooks *hooks) {
     if (!result) return AGJK_STATUS_INVALID_INPUT;
     result_reset(result);
     agjk__minkowski md;
@@ -145,14 +151,21 @@ agjk_status agjk__query_run(const agjk_shape *a, const agjk_pose *pose_a, const 
     return result->status = status;
 }
 
+agjk_status agjk__query_run(const agjk_shape *a, const agjk_pose *pose_a, const agjk_shape *b,
+                            const agjk_pose *pose_b, const agjk_options *options,
+                            agjk_result *result, int boolean_mode, struct agjk_cache *cache,
+                            const agjk__warm_hooks *hooks) {
+    return run_query(a, pose_a, b, pose_b, options, result, boolean_mode, cache, hooks);
+}
+
 agjk_status agjk_distance(const agjk_shape *a, const agjk_pose *pose_a, const agjk_shape *b,
                           const agjk_pose *pose_b, const agjk_options *options,
                           agjk_result *result) {
-    return agjk__query_run(a, pose_a, b, pose_b, options, result, 0, NULL, NULL);
+    return run_query(a, pose_a, b, pose_b, options, result, 0, NULL, NULL);
 }
 
 agjk_status agjk_collide(const agjk_shape *a, const agjk_pose *pose_a, const agjk_shape *b,
                          const agjk_pose *pose_b, const agjk_options *options,
                          agjk_result *result) {
-    return agjk__query_run(a, pose_a, b, pose_b, options, result, 1, NULL, NULL);
+    return run_query(a, pose_a, b, pose_b, options, result, 1, NULL, NULL);
 }
