@@ -72,7 +72,8 @@ agjk_vec3 agjk__momentum_direction_other(const agjk__momentum *m, int k, agjk_ve
 /* Support direction d_k for iterate x_k at iteration k while momentum is
  * active. Nesterov's and Polyak's mixes inline: a few operations, where the
  * call took 3% of a Nesterov query on overlapping ellipsoids. */
-static inline agjk_vec3 agjk__momentum_direction(const agjk__momentum *m, int k, agjk_vec3 x) {
+static AGJK__ALWAYS_INLINE agjk_vec3 agjk__momentum_direction(const agjk__momentum *m, int k,
+                                                              agjk_vec3 x) {
     if (m->method == AGJK_METHOD_NESTEROV)
         return agjk__direction_or_gradient(agjk__nesterov_mix(m, k, x), x);
     if (m->method == AGJK_METHOD_POLYAK)
@@ -204,10 +205,10 @@ typedef struct agjk__start {
  * ends the query before the solver sets anything up: its caller can answer
  * from `start` alone (a tenth of a one-support query's instructions; inline,
  * so that the point stays in registers). */
-static AGJK__ALWAYS_INLINE int agjk__solve_start(agjk__minkowski *md, const agjk__solve_input *in,
-                                                 agjk__start *start) {
+static AGJK__ALWAYS_INLINE int agjk__first_support(agjk__minkowski *md,
+                                                   const agjk__solve_input *in, agjk__vertex *s,
+                                                   agjk_vec3 *x_out) {
     agjk_vec3 x = in->x0;
-    agjk__vertex *s = &start->s;
     /* The problem's size is not known yet: give the callbacks a unit-size
      * direction (exact power-of-two scaling of x_0). */
     agjk__minkowski_support(md, v3_scale_to_unit(x, v3_maxabs(x)), 0.0, s, 1);
@@ -229,21 +230,22 @@ static AGJK__ALWAYS_INLINE int agjk__solve_start(agjk__minkowski *md, const agjk
             x_units = v3_normalize(x);
         x = x_units;
     }
-    start->x = x;
-    start->separated =
-        in->boolean_mode && !md->bad_support && agjk__minkowski_separates(md, x, s->w);
-    return start->separated;
+    *x_out = x;
+    return in->boolean_mode && !md->bad_support && agjk__minkowski_separates(md, x, s->w);
 }
 
-/* The solver from iteration 0's support on: `start` (for a separated start
- * it only writes the early exit's output), or when NULL, the whole run. */
+/* The same into `start`. */
+static AGJK__ALWAYS_INLINE int agjk__solve_start(agjk__minkowski *md, const agjk__solve_input *in,
+                                                 agjk__start *start) {
+    return start->separated = agjk__first_support(md, in, &start->s, &start->x);
+}
+
+/* The solver from iteration 0's support on, `start` (for a separated start
+ * it only writes the early exit's output). */
 void agjk__solve_from(agjk__minkowski *md, const agjk__solve_input *in, const agjk__start *start,
                       agjk__solve_output *out);
 
-/* The whole query's solver run. */
-static inline void agjk__solve(agjk__minkowski *md, const agjk__solve_input *in,
-                               agjk__solve_output *out) {
-    agjk__solve_from(md, in, NULL, out);
-}
+/* The whole query's solver run, iteration 0 included. */
+void agjk__solve(agjk__minkowski *md, const agjk__solve_input *in, agjk__solve_output *out);
 
 #endif
