@@ -24,17 +24,6 @@ static AGJK__ALWAYS_INLINE void result_reset(agjk_result *r) {
     for (int i = 0; i < 8; ++i) r->reserved[i] = 0.0;
 }
 
-/* *p read as three separate 8-byte loads, for a vector the solver stored just
- * before: a load is served from the store buffer only when one store covers
- * it. clang stored x and y together and loaded y and z together, and the
- * load waited for the cache: 13 of the 80 ns of a clang-built one-support
- * Boolean query on ellipsoids, 9 of 69 on boxes. Three scalar loads are
- * covered whatever the stores were (gcc's code: the same time). */
-static agjk_vec3 v3_load_scalars(const agjk_vec3 *p) {
-    const volatile double *q = &p->x;
-    return v3(q[0], q[1], q[2]);
-}
-
 /* The query, compiled once per entry point: agjk_distance() and
  * agjk_collide() each get a copy with their mode and no cache folded in, so
  * that a program calling only one of them links neither the other's code

@@ -208,7 +208,7 @@ typedef struct agjk__start {
 static AGJK__ALWAYS_INLINE int agjk__first_support(agjk__minkowski *md,
                                                    const agjk__solve_input *in, agjk__vertex *s,
                                                    agjk_vec3 *x_out) {
-    agjk_vec3 x = in->x0;
+    agjk_vec3 x = v3_load_scalars(&in->x0); /* (written just before, by other code) */
     /* The problem's size is not known yet: give the callbacks a unit-size
      * direction (exact power-of-two scaling of x_0). */
     agjk__minkowski_support(md, v3_scale_to_unit(x, v3_maxabs(x)), 0.0, s, 1);
