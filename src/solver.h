@@ -201,10 +201,12 @@ typedef struct agjk__start {
 /* Iteration 0: the support in direction x_0 for every method (d_{-1} =
  * s_{-1} = x_0 gives d_0 = x_0), which also tells the problem's size: from
  * then on the solver works in units where it is about 1
- * (agjk__minkowski_set_scale). Returns start->separated. A separated start
- * ends the query before the solver sets anything up: its caller can answer
- * from `start` alone (a tenth of a one-support query's instructions; inline,
- * so that the point stays in registers). */
+ * (agjk__minkowski_set_scale). Writes the support point to *s and the
+ * direction, x_0 in solver units, to *x_out; returns 1 when, in Boolean
+ * mode, its plane already separates the shapes. Such a start ends the query
+ * before the solver sets anything up: its caller answers from it alone (a
+ * tenth of a one-support query's instructions; inline, so that the point
+ * stays in registers). */
 static AGJK__ALWAYS_INLINE int agjk__first_support(agjk__minkowski *md,
                                                    const agjk__solve_input *in, agjk__vertex *s,
                                                    agjk_vec3 *x_out) {
