@@ -52,9 +52,9 @@ static AGJK__ALWAYS_INLINE agjk_status run_query(const agjk_shape *a, const agjk
      * anything up (a cache records the solver's output, so cached queries
      * take the solver's path for that end too). Distance queries leave it to
      * the solver, which then keeps its point in registers. */
-    agjk__start start, *first = NULL;
+    agjk__solve_output out;
     if (boolean_mode) {
-        first = &start;
+        agjk__start start;
         if (agjk__solve_start(&md, &in, &start) && !cache) {
             result->iterations = 1;
             result->support_calls = 1;
@@ -64,12 +64,10 @@ static AGJK__ALWAYS_INLINE agjk_status run_query(const agjk_shape *a, const agjk
             result->normal = m3_mul(&pose_a->rotation[0][0], n);
             return result->status = AGJK_STATUS_SEPARATED;
         }
-    }
-    agjk__solve_output out;
-    if (first)
-        agjk__solve_from(&md, &in, first, &out);
-    else
+        agjk__solve_from(&md, &in, &start, &out);
+    } else {
         agjk__solve(&md, &in, &out);
+    }
     if (cache) {
         if (out.outcome == AGJK__BAD_SUPPORT) hooks->reset(cache);
         else hooks->save(cache, a, b, &md, &in, &out);

@@ -116,6 +116,20 @@ static inline int support_ends_query(const solver *sv, agjk_vec3 d, const agjk__
     return support_ends_query_slow(sv, d, s, out);
 }
 
+/* support_ends_query for iteration 0's support taken by the caller, whose
+ * plane test (agjk__first_support) has decided already. */
+static inline int start_ends_query(const agjk__minkowski *md, const agjk__start *start,
+                                   agjk__solve_output *out) {
+    if (md->bad_support) {
+        out->outcome = AGJK__BAD_SUPPORT;
+        return 1;
+    }
+    if (!start->separated) return 0;
+    out->outcome = AGJK__SEPARATED_EARLY;
+    out->direction = start->x;
+    return 1;
+}
+
 /* Whether a gap g at the current iterate meets the tolerance: AGJK__CONVERGED
  * when it meets the requested one, AGJK__AT_FLOOR when it is down to what
  * double precision resolves but above the request, else AGJK__ITERATION_CAP
@@ -816,7 +830,7 @@ static AGJK__ALWAYS_INLINE void solve(agjk__minkowski *md, const agjk__solve_inp
     agjk__vertex s;
     first_support(&sv, &s, out, start);
     agjk_vec3 d0 = sv.x; /* direction of the first support */
-    if (support_ends_query(&sv, d0, &s, out)) {
+    if (start ? start_ends_query(md, start, out) : support_ends_query(&sv, d0, &s, out)) {
         out->x = out->x_member = sv.x;
         out->noise = md->noise;
         out->a = out->b = v3(0.0, 0.0, 0.0);
