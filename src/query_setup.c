@@ -14,32 +14,85 @@ static int shape_is_valid(const agjk_shape *shape) {
  * quaternion-built matrix, far too little to hide a scale or shear. */
 #define ROTATION_TOLERANCE 1e-6
 
-/* Checks a pose: translation in range, rotation orthonormal with det +1
- * (rows 0 and 1 orthonormal, row 2 their cross product, to 1e-6). */
-static int pose_is_valid(const agjk_pose *pose) {
-    if (!pose) return 0;
-    agjk_vec3 t = pose->translation;
+/* A pose's deviations from a rotation: rows x and y of R orthonormal, and
+ * z = x cross y (which makes z orthonormal to both and det R = +1, where a
+ * reflection, det -1, would turn the shapes inside out). Cheaper than the six
+ * entries of R R^T and the determinant (27 floating-point operations against
+ * 44, twice per query), and as strict: within 1e-6 per entry, z is within
+ * about 1e-6 of a unit vector orthogonal to x and y. */
+typedef struct {
+    double xx, yy, xy; /* |x|^2 - 1, |y|^2 - 1, <x, y> */
+    agjk_vec3 e;       /* x cross y - z */
+} pose_deviation;
+
+static AGJK__ALWAYS_INLINE pose_deviation deviation_of(const agjk_pose *pose) {
     const double *r = &pose->rotation[0][0]; /* row-major, r[3 * row + column] */
     agjk_vec3 x = v3(r[0], r[1], r[2]), y = v3(r[3], r[4], r[5]), z = v3(r[6], r[7], r[8]);
-    /* A rotation: rows x and y orthonormal, and z = x cross y (which makes
-     * z orthonormal to both and det R = +1, where a reflection, det -1, would
-     * turn the shapes inside out). Cheaper than the six entries of R R^T and
-     * the determinant (27 floating-point operations against 44, twice per
-     * query), and as strict: within 1e-6 per entry, z is within about 1e-6
-     * of a unit vector orthogonal to x and y. */
-    double xx = v3_dot(x, x) - 1.0, yy = v3_dot(y, y) - 1.0, xy = v3_dot(x, y);
-    agjk_vec3 e = v3_sub(v3_cross(x, y), z);
-    /* The usual pose passes at once: the six deviations' squares summing to
-     * at most the tolerance squared bound each of them, and a sum of the
-     * translation's |t_i| in range bounds each of those (one comparison
-     * each, where NaN and Inf fail too). Otherwise the test is made entry by
-     * entry, the documented one. */
-    double sum = xx * xx + yy * yy + xy * xy + v3_norm2(e);
-    if ((sum <= ROTATION_TOLERANCE * ROTATION_TOLERANCE) & (v3_norm1(t) <= AGJK_MAX_COORDINATE))
+    pose_deviation d;
+    d.xx = v3_dot(x, x) - 1.0;
+    d.yy = v3_dot(y, y) - 1.0;
+    d.xy = v3_dot(x, y);
+    d.e = v3_sub(v3_cross(x, y), z);
+    return d;
+}
+
+/* The documented test, entry by entry: translation in range, every
+ * deviation within 1e-6. */
+static AGJK__NOINLINE AGJK__COLD int pose_is_valid(const agjk_pose *pose) {
+    pose_deviation d = deviation_of(pose);
+    return v3_in_range(pose->translation) && fabs(d.xx) <= ROTATION_TOLERANCE &&
+           fabs(d.yy) <= ROTATION_TOLERANCE && fabs(d.xy) <= ROTATION_TOLERANCE &&
+           fabs(d.e.x) <= ROTATION_TOLERANCE && fabs(d.e.y) <= ROTATION_TOLERANCE &&
+           fabs(d.e.z) <= ROTATION_TOLERANCE;
+}
+
+/* The sum of the squared deviations of both poses. */
+#if defined(__GNUC__)
+/* Side by side, pose A in lane 0 and B in lane 1 of the GNU vector extension
+ * (gcc and clang; SSE2 on x86-64): half the arithmetic instructions. Each
+ * lane computes what deviation_of does. */
+typedef double pose_pair __attribute__((vector_size(16)));
+
+static AGJK__ALWAYS_INLINE double squared_deviations(const agjk_pose *pose_a,
+                                                     const agjk_pose *pose_b) {
+    const double *ra = &pose_a->rotation[0][0], *rb = &pose_b->rotation[0][0];
+    pose_pair x0 = {ra[0], rb[0]}, x1 = {ra[1], rb[1]}, x2 = {ra[2], rb[2]};
+    pose_pair y0 = {ra[3], rb[3]}, y1 = {ra[4], rb[4]}, y2 = {ra[5], rb[5]};
+    pose_pair z0 = {ra[6], rb[6]}, z1 = {ra[7], rb[7]}, z2 = {ra[8], rb[8]};
+    pose_pair one = {1.0, 1.0};
+    pose_pair xx = x0 * x0 + x1 * x1 + x2 * x2 - one;
+    pose_pair yy = y0 * y0 + y1 * y1 + y2 * y2 - one;
+    pose_pair xy = x0 * y0 + x1 * y1 + x2 * y2;
+    pose_pair e0 = x1 * y2 - x2 * y1 - z0;
+    pose_pair e1 = x2 * y0 - x0 * y2 - z1;
+    pose_pair e2 = x0 * y1 - x1 * y0 - z2;
+    pose_pair sum = xx * xx + yy * yy + xy * xy + (e0 * e0 + e1 * e1 + e2 * e2);
+    return sum[0] + sum[1];
+}
+#else
+static double squared_deviation(pose_deviation d) {
+    return d.xx * d.xx + d.yy * d.yy + d.xy * d.xy + v3_norm2(d.e);
+}
+
+static double squared_deviations(const agjk_pose *pose_a, const agjk_pose *pose_b) {
+    return squared_deviation(deviation_of(pose_a)) + squared_deviation(deviation_of(pose_b));
+}
+#endif
+
+/* Both poses, non-null. The usual pair passes at once: the twelve
+ * deviations' squares summing to at most the tolerance squared bound each
+ * of them, and the translations' 1-norms summing to at most the range bound
+ * every entry (one comparison each, where NaN and Inf fail too). Otherwise the
+ * documented test decides, pose by pose: the same verdicts. One call for
+ * both, out of line: inline, the query's set-up compiled worse (one-support
+ * Boolean queries on boxes: 36.0 ns against 33.3 out of line, 35.8 with
+ * the poses taken one after the other). */
+static AGJK__NOINLINE int poses_are_valid(const agjk_pose *pose_a, const agjk_pose *pose_b) {
+    double sum = squared_deviations(pose_a, pose_b);
+    double reach = v3_norm1(pose_a->translation) + v3_norm1(pose_b->translation);
+    if ((sum <= ROTATION_TOLERANCE * ROTATION_TOLERANCE) & (reach <= AGJK_MAX_COORDINATE))
         return 1;
-    return v3_in_range(t) && fabs(xx) <= ROTATION_TOLERANCE && fabs(yy) <= ROTATION_TOLERANCE &&
-           fabs(xy) <= ROTATION_TOLERANCE && fabs(e.x) <= ROTATION_TOLERANCE &&
-           fabs(e.y) <= ROTATION_TOLERANCE && fabs(e.z) <= ROTATION_TOLERANCE;
+    return pose_is_valid(pose_a) && pose_is_valid(pose_b);
 }
 
 /* Prepares the relative transform (shapes and poses validated). */
@@ -151,7 +204,7 @@ int agjk__query_prepare(const agjk_shape *a, const agjk_pose *pose_a, const agjk
                         agjk__minkowski *md, agjk__solve_input *in) {
     int hint_a, hint_b;
     if (!read_options(options, in, &hint_a, &hint_b) || !shape_is_valid(a) ||
-        !shape_is_valid(b) || !pose_is_valid(pose_a) || !pose_is_valid(pose_b))
+        !shape_is_valid(b) || !pose_a || !pose_b || !poses_are_valid(pose_a, pose_b))
         return 0;
     minkowski_init(md, a, pose_a, b, pose_b, hint_a, hint_b);
     if (!isfinite(md->margin)) return 0;

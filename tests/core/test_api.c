@@ -173,6 +173,16 @@ START_TEST(bad_input) {
     good_case(&c); memset(c.pb.rotation, 0, sizeof c.pb.rotation); expect_invalid(&c, "zero matrix");
     good_case(&c); c.pa.rotation[1][1] = 1.0 + 1e-5; expect_invalid(&c, "entry off by 1e-5");
     good_case(&c); c.pa.rotation[1][1] = 1.0 + 1e-9; expect_valid(&c, "entry off by 1e-9 is accepted");
+    /* Each pose passes the check of its summed squared deviations alone,
+     * the pair does not: the entry-by-entry test decides (valid). Likewise
+     * two translations in range whose 1-norms sum beyond it. */
+    good_case(&c); c.pa.rotation[0][1] = 7e-7; c.pb.rotation[0][1] = 7e-7;
+    expect_valid(&c, "both rotations off by 7e-7 are accepted");
+    good_case(&c); c.pa.rotation[0][1] = 7e-7; c.pb.rotation[0][1] = -2e-6;
+    expect_invalid(&c, "one rotation off by 2e-6 beside one off by 7e-7");
+    good_case(&c); c.pa.translation = tu_vec(0.6 * AGJK_MAX_COORDINATE, 0.0, 0.0);
+    c.pb.translation = tu_vec(-0.6 * AGJK_MAX_COORDINATE, 0.0, 0.0);
+    expect_valid(&c, "translations summing beyond the range are each accepted");
     /* shapes */
     good_case(&c); c.b.margin = -0.1; expect_invalid(&c, "negative margin");
     good_case(&c); c.a.support = NULL; expect_invalid(&c, "NULL support function");
