@@ -120,7 +120,8 @@ static void follow_rescale(epa_state *st) {
  * and the final call, so that the support path is expanded once. */
 static AGJK__ALWAYS_INLINE int support(epa_state *st, agjk_vec3 n, agjk__vertex *s,
                                        double *h_out) {
-    agjk__minkowski_support(st->md, v3_neg(n), 0.0, s, 1); /* argmin <-n, .> */
+    /* argmin <-n, .> */
+    agjk__minkowski_support(st->md, v3_neg(n), 0.0, s, AGJK__SUPPORT_DIRECT);
     ++st->support_calls;
     if (st->md->bad_support) return 0;
     if (st->md->rescaled != 1.0) follow_rescale(st);

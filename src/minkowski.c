@@ -63,7 +63,7 @@ void agjk__minkowski_bound_points_from_data(agjk__minkowski *md) {
         !point_bounds(md->support_b, md->data_b, &l1_b, &max_b) || !(l1_a + l1_b <= md->raw_limit))
         return;
     if (max_a + max_b > md->magnitude) agjk__minkowski_grow(md, max_a + max_b);
-    md->bounded = 1;
+    md->bounded = agjk__is_ellipsoid(md->support_b) ? AGJK__BOUNDED_ELLIPSOID_B : AGJK__BOUNDED;
 }
 
 /* Multiplies everything md holds in solver units by f (a power of two). */

@@ -39,21 +39,30 @@ static inline agjk_vec3 agjk__segment_point(const agjk_capsule *c, agjk_vec3 d) 
     return v3(0.0, 0.0, signed_extent(c->half_height, d.z));
 }
 
-/* Ellipsoid {p : sum (p_i / r_i)^2 <= 1}: D^2 d / ||D d|| with D = diag(r),
+/* Ellipsoid {p : sum (p_i / r_i)^2 <= 1}: its support point is
+ * D^2 d / ||D d|| with D = diag(r). Here q = D^2 d and *inv = 1 / ||D d||,
  * when ||D d||^2 lies far from underflow and overflow (the common case: one
  * square root and one division). Returns 0, with nothing written, otherwise
  * (tiny or huge directions, stiff radii: shape_ellipsoid.c rescales first).
  * Power-of-two scalings of d or of the radii scale every step exactly, so
  * answers stay bit-equivariant. */
-static inline int agjk__ellipsoid_point(const agjk_ellipsoid *e, agjk_vec3 d, agjk_vec3 *out) {
+static inline int agjk__ellipsoid_unnormalized(const agjk_ellipsoid *e, agjk_vec3 d, agjk_vec3 *q,
+                                               double *inv) {
     agjk_vec3 r = e->radii;
     double x = r.x * d.x, y = r.y * d.y, z = r.z * d.z; /* D d */
     double n2 = x * x + y * y + z * z;
     if (!(n2 >= 0x1p-900 && n2 <= 0x1p900)) return 0;
-    double inv = 1.0 / sqrt(n2);
-    out->x = r.x * x * inv;
-    out->y = r.y * y * inv;
-    out->z = r.z * z * inv;
+    *inv = 1.0 / sqrt(n2);
+    *q = v3(r.x * x, r.y * y, r.z * z);
+    return 1;
+}
+
+/* The support point itself, q / ||D d||. */
+static inline int agjk__ellipsoid_point(const agjk_ellipsoid *e, agjk_vec3 d, agjk_vec3 *out) {
+    agjk_vec3 q;
+    double inv;
+    if (!agjk__ellipsoid_unnormalized(e, d, &q, &inv)) return 0;
+    *out = v3_scale(q, inv);
     return 1;
 }
 

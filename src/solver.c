@@ -89,7 +89,7 @@ static AGJK__ALWAYS_INLINE void support(solver *sv, agjk_vec3 *d, double d2, agj
     if (sv->md->rescaled != 1.0) follow_rescale(sv, d);
 }
 static AGJK__NOINLINE void support_rare(solver *sv, agjk_vec3 *d, agjk__vertex *s) {
-    support(sv, d, 0.0, s, 0);
+    support(sv, d, 0.0, s, AGJK__SUPPORT_CALL);
 }
 
 /* Checks a fresh support s in direction d: a bad callback output ends the
@@ -892,7 +892,7 @@ static AGJK__ALWAYS_INLINE void solve(agjk__minkowski *md, const agjk__solve_inp
                 d = agjk__momentum_direction(&sv.m, k, sv.x);
                 d2 = 0.0;
             }
-            support(&sv, &d, d2, &s, 1);
+            support(&sv, &d, d2, &s, AGJK__SUPPORT_DIRECT_LOOP);
             ++out->support_calls;
             if (support_ends_query(&sv, d, &s, out)) break;
             /* Adaptive method: a first momentum support that found s_0 again
