@@ -273,10 +273,13 @@ static inline void agjk__minkowski_bound_points(agjk__minkowski *md) {
 /* s = argmin_{s in D} <d, s> = S_A(-d) - S_B(d) (paper eq. 7-8), d in A's frame,
  * non-zero and finite, with the points of A and B it came from. d2 is
  * v3_norm2(d) when the caller has it at hand (the solver's iterate), else 0;
- * direct is one of AGJK__SUPPORT_* (a constant at each call site). */
+ * db_given R^T d, B's direction, when the caller has it (the projection
+ * turns a face's foot into B's frame alongside it: agjk__projection_notes),
+ * else NULL; direct is one of AGJK__SUPPORT_* (a constant at each call
+ * site). */
 static AGJK__ALWAYS_INLINE void agjk__minkowski_support(agjk__minkowski *md, agjk_vec3 d,
                                                          double d2, agjk__vertex *out,
-                                                         int direct) {
+                                                         int direct, const agjk_vec3 *db_given) {
     /* The direction's range, from d2 when it settles it: the computed
      * squared norm is within 3 eps of |d|^2 (far from underflow), so
      * d2 >= 4 dmin^2 gives max |d_i| >= |d| / sqrt(3) > dmin, and
@@ -285,11 +288,13 @@ static AGJK__ALWAYS_INLINE void agjk__minkowski_support(agjk__minkowski *md, agj
      * always did: the rescue runs exactly when it did. */
     if (!(d2 >= md->direction_floor2 && d2 <= AGJK__DIRECTION_NORM2_MAX)) {
         double dm = v3_maxabs(d);
-        if (!(dm >= md->direction_min && dm <= AGJK__DIRECTION_MAX))
+        if (!(dm >= md->direction_min && dm <= AGJK__DIRECTION_MAX)) {
             d = agjk__minkowski_rescue_direction(md, d);
+            db_given = NULL; /* (for the direction before its rescue) */
+        }
     }
     agjk_vec3 na = v3_neg(d);
-    agjk_vec3 db = m3_tmul(&md->rotation[0][0], d);
+    agjk_vec3 db = db_given ? v3_load_scalars(db_given) : m3_tmul(&md->rotation[0][0], d);
     agjk_vec3 pa = agjk__shape_support(md, md->support_a, md->data_a, na, &md->hint_a, direct);
 #if AGJK__DIRECT_SUPPORT
     /* B an ellipsoid, in the solver's loop: its point in A's frame,

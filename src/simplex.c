@@ -404,19 +404,28 @@ static AGJK__NOINLINE unsigned edge_output(const agjk_vec3 *w, int n, int ib, do
  * vectors, already computed), and the vertex q = w[iq] of the face nearest
  * the origin (the error of <n, q> grows with |q|; accurate even when the
  * foot is much nearer the origin than a), if it passes the KKT test for
- * w[o] (o < 0: none). Returns the support mask, or 0. */
+ * w[o] (o < 0: none); the foot turned into B's frame too when notes ask
+ * (agjk__projection_notes). Returns the support mask, or 0. */
 static inline unsigned face_output(const agjk_vec3 *w, int n, int ib, int ic, agjk_vec3 u,
                                    agjk_vec3 v, int iq, double det, double lb, double lc,
-                                   double la, int o, double lambda[4], agjk_vec3 *point) {
+                                   double la, int o, double lambda[4], agjk_vec3 *point,
+                                   agjk__projection_notes *notes) {
     int ia = n - 1;
     agjk_vec3 nrm = v3_cross(u, v);
-    agjk_vec3 f = v3_scale(nrm, v3_dot(nrm, w[iq]) / v3_norm2(nrm));
+    double t = v3_dot(nrm, w[iq]) / v3_norm2(nrm);
+    agjk_vec3 f = v3_scale(nrm, t);
+    agjk_vec3 turned = v3(0.0, 0.0, 0.0);
+    if (notes && notes->rotation) turned = v3_scale(m3_tmul(notes->rotation, nrm), t);
     double inv = 1.0 / det;
     double wa = la * inv, wb = lb * inv, wc = lc * inv;
     if (!(wa > 0.0 && wb > 0.0 && wc > 0.0)) return 0u;
     if (o >= 0 && !supports(f, v3_norm2(f), w[o])) return 0u;
     put(lambda, ia, wa, ib, wb, ic, wc);
     *point = f;
+    if (notes && notes->rotation) {
+        notes->turned = turned;
+        notes->turned_valid = 1;
+    }
     return (1u << ia) | (1u << ib) | (1u << ic);
 }
 
@@ -440,7 +449,7 @@ static unsigned gjk_segment(const agjk_vec3 *w, int exhaustive, double lambda[4]
 }
 
 static unsigned gjk_triangle(const agjk_vec3 *w, int exhaustive, double lambda[4],
-                             agjk_vec3 *point) {
+                             agjk_vec3 *point, agjk__projection_notes *notes) {
     agjk_vec3 a = w[2], u = v3_sub(w[0], a), v = v3_sub(w[1], a);
     double ru = v3_dot(a, u), rv = v3_dot(a, v);
     if (ru >= 0.0 && rv >= 0.0) return vertex_output(w, 3, lambda, point);
@@ -452,7 +461,8 @@ static unsigned gjk_triangle(const agjk_vec3 *w, int exhaustive, double lambda[4
         double db = 2.0 * ru + uu, dc = 2.0 * rv + vv;
         int iq = db < dc ? (db < 0.0 ? 0 : 2) : (dc < 0.0 ? 1 : 2);
         unsigned mask = det > WELL_CONDITIONED * uu * vv
-                            ? face_output(w, 3, 0, 1, u, v, iq, det, lb, lc, la, -1, lambda, point)
+                            ? face_output(w, 3, 0, 1, u, v, iq, det, lb, lc, la, -1, lambda, point,
+                                          notes)
                             : 0u;
         return mask ? mask : decline(w, 3, exhaustive, lambda, point);
     }
@@ -480,7 +490,8 @@ static AGJK__ALWAYS_INLINE unsigned tetra_face(const agjk_vec3 *w, const agjk_ve
                                                const double *gd, const double *gx,
                                                const double *r, int k, int *taken,
                                                int *inward, double lambda[4],
-                                               agjk_vec3 *point) {
+                                               agjk_vec3 *point,
+                                               agjk__projection_notes *notes) {
     int i = k == 2 ? 0 : k + 1, j = k == 0 ? 2 : k - 1;
     double gii = gd[i], gjj = gd[j], gij = gx[k], ri = r[i], rj = r[j];
     double det = gii * gjj - gij * gij;
@@ -496,7 +507,7 @@ static AGJK__ALWAYS_INLINE unsigned tetra_face(const agjk_vec3 *w, const agjk_ve
     /* |w_i|^2 - |a|^2 = 2 r_i + g_ii: the vertex nearest the origin */
     double di = 2.0 * ri + gii, dj = 2.0 * rj + gjj;
     int iq = di < dj ? (di < 0.0 ? i : 3) : (dj < 0.0 ? j : 3);
-    return face_output(w, 4, i, j, e[i], e[j], iq, det, li, lj, la, k, lambda, point);
+    return face_output(w, 4, i, j, e[i], e[j], iq, det, li, lj, la, k, lambda, point, notes);
 }
 
 /* The edge a-w_i of the tetrahedron: its candidate when the Gram form of the
@@ -520,7 +531,8 @@ static unsigned tetra_edge(const agjk_vec3 *w, int i, int j, int k, double gii, 
  * other cases are left to the exhaustive projection. The edges e_i = w_i - a
  * and their squared lengths gd[i] come from the caller, which has them. */
 static unsigned tetra_inside(const agjk_vec3 *w, const agjk_vec3 *e, const double *gd,
-                             double lambda[4], agjk_vec3 *point, agjk__inside *inside) {
+                             double lambda[4], agjk_vec3 *point,
+                             agjk__projection_notes *notes) {
     agjk_vec3 a = w[3];
     agjk_vec3 e0 = e[0], e1 = e[1], e2 = e[2];
     double g00 = gd[0], g11 = gd[1], g22 = gd[2];
@@ -547,7 +559,8 @@ static unsigned tetra_inside(const agjk_vec3 *w, const agjk_vec3 *e, const doubl
     lambda[2] = n2 * inv;
     lambda[3] = na * inv;
     *point = v3(0.0, 0.0, 0.0);
-    if (inside) {
+    if (notes) {
+        agjk__inside *inside = &notes->inside;
         inside->h[0] = n0;
         inside->h[1] = n1;
         inside->h[2] = n2;
@@ -576,7 +589,7 @@ static unsigned thin_face(const agjk_vec3 *w, int taken, double lambda[4], agjk_
 }
 
 static unsigned gjk_tetrahedron(const agjk_vec3 *w, int exhaustive, double lambda[4],
-                                agjk_vec3 *point, agjk__inside *inside) {
+                                agjk_vec3 *point, agjk__projection_notes *notes) {
     agjk_vec3 a = w[3];
     agjk_vec3 e[3];
     e[0] = v3_sub(w[0], a);
@@ -604,7 +617,7 @@ static unsigned gjk_tetrahedron(const agjk_vec3 *w, int exhaustive, double lambd
      * index order. */
     int back = r[0] >= r[1] ? (r[0] >= r[2] ? 0 : 2) : (r[1] >= r[2] ? 1 : 2);
     int taken = 0, inward = 0, ignored = 0;
-    unsigned mask = tetra_face(w, e, gd, gx, r, back, &taken, &inward, lambda, point);
+    unsigned mask = tetra_face(w, e, gd, gx, r, back, &taken, &inward, lambda, point, notes);
     /* The origin over that face, on the side of the vertex it leaves out:
      * inside the tetrahedron, as at GJK's last step on overlapping shapes
      * (else the answer is on another face). The inside test then comes
@@ -612,11 +625,13 @@ static unsigned gjk_tetrahedron(const agjk_vec3 *w, int exhaustive, double lambd
      * face or edge passes its KKT test, so the order changes no answer, and
      * the last step skips two faces and three edges (overlapping ellipsoids:
      * about 150 instructions per query). */
-    if (!mask && inward) mask = tetra_inside(w, e, gd, lambda, point, inside);
+    if (!mask && inward) mask = tetra_inside(w, e, gd, lambda, point, notes);
     if (!mask && !taken)
-        mask = tetra_face(w, e, gd, gx, r, back == 0 ? 1 : 0, &taken, &ignored, lambda, point);
+        mask = tetra_face(w, e, gd, gx, r, back == 0 ? 1 : 0, &taken, &ignored, lambda, point,
+                          notes);
     if (!mask && !taken)
-        mask = tetra_face(w, e, gd, gx, r, back == 2 ? 1 : 2, &taken, &ignored, lambda, point);
+        mask = tetra_face(w, e, gd, gx, r, back == 2 ? 1 : 2, &taken, &ignored, lambda, point,
+                          notes);
     if (!mask && !taken) {
         mask = tetra_edge(w, 0, 1, 2, gd[0], gx[2], gx[1], r[0], r[1], r[2], lambda, point);
         if (!mask)
@@ -624,7 +639,7 @@ static unsigned gjk_tetrahedron(const agjk_vec3 *w, int exhaustive, double lambd
         if (!mask)
             mask = tetra_edge(w, 2, 0, 1, gd[2], gx[1], gx[0], r[2], r[0], r[1], lambda, point);
         /* GJK's last step on overlapping shapes: the origin enclosed. */
-        if (!mask) mask = tetra_inside(w, e, gd, lambda, point, inside);
+        if (!mask) mask = tetra_inside(w, e, gd, lambda, point, notes);
     }
     if (!mask && taken) mask = thin_face(w, taken, lambda, point);
     return mask ? mask : decline(w, 4, exhaustive, lambda, point);
@@ -635,22 +650,22 @@ unsigned agjk__simplex_project_gjk_fast(const agjk_vec3 *w, int n, double lambda
     switch (n) {
     case 1: return vertex_output(w, 1, lambda, point);
     case 2: return gjk_segment(w, 0, lambda, point);
-    case 3: return gjk_triangle(w, 0, lambda, point);
+    case 3: return gjk_triangle(w, 0, lambda, point, NULL);
     default: return gjk_tetrahedron(w, 0, lambda, point, NULL);
     }
 }
 
-unsigned agjk__simplex_project_gjk_inside(const agjk_vec3 *w, int n, double lambda[4],
-                                          agjk_vec3 *point, agjk__inside *inside) {
+unsigned agjk__simplex_project_gjk_noted(const agjk_vec3 *w, int n, double lambda[4],
+                                         agjk_vec3 *point, agjk__projection_notes *notes) {
     /* Largest first: a tetrahedron is the usual case on curved shapes. */
-    if (n >= 4) return gjk_tetrahedron(w, 1, lambda, point, inside);
-    if (n == 3) return gjk_triangle(w, 1, lambda, point);
+    if (n >= 4) return gjk_tetrahedron(w, 1, lambda, point, notes);
+    if (n == 3) return gjk_triangle(w, 1, lambda, point, notes);
     if (n == 2) return gjk_segment(w, 1, lambda, point);
     return vertex_output(w, 1, lambda, point);
 }
 
 unsigned agjk__simplex_project_gjk(const agjk_vec3 *w, int n, double lambda[4], agjk_vec3 *point) {
-    return agjk__simplex_project_gjk_inside(w, n, lambda, point, NULL);
+    return agjk__simplex_project_gjk_noted(w, n, lambda, point, NULL);
 }
 
 agjk_status agjk_simplex_project_origin(const agjk_vec3 *vertices, int count,

@@ -45,7 +45,9 @@ typedef struct solver {
     agjk_vec3 x;
     double x2;          /* ||x||^2 */
     agjk__momentum m;
-    agjk__inside inside;  /* the enclosure's inside test, when inside_reported */
+    /* The projection's notes: the enclosure's inside test, when
+     * inside_reported, and R^T x, when turned_valid. */
+    agjk__projection_notes notes;
     int inside_reported;
     double abs_tolerance; /* absolute mode: the tolerance in solver units squared */
     double lie_factor;    /* a gap below -lie_factor ||x|| noise proves a lying support */
@@ -68,6 +70,7 @@ static AGJK__NOINLINE AGJK__COLD void follow_rescale(solver *sv, agjk_vec3 *d) {
     }
     sv->x = v3_scale(sv->x, f);
     sv->x2 = v3_norm2(sv->x);
+    sv->notes.turned_valid = 0; /* (x changed units) */
     /* The direction the support just used: scaled with the rest, unless that
      * would push it below DIRECTION_MIN, where it would start to lose bits
      * (a shrink by 2^-600 once left a denormal d whose direction, off by
@@ -80,16 +83,17 @@ static AGJK__NOINLINE AGJK__COLD void follow_rescale(solver *sv, agjk_vec3 *d) {
 }
 
 /* One Minkowski support in direction d (s in the current units), d2 = |d|^2
- * if known, else 0 (see agjk__minkowski_support): inline for the loop's own
- * call, out of line for the rare ones (momentum switch-off, final
- * certification), so that the support path is expanded once. */
+ * if known, else 0, and db = R^T d if known, else NULL (see
+ * agjk__minkowski_support): inline for the loop's own call, out of line for
+ * the rare ones (momentum switch-off, final certification), so that the
+ * support path is expanded once. */
 static AGJK__ALWAYS_INLINE void support(solver *sv, agjk_vec3 *d, double d2, agjk__vertex *s,
-                                        int direct) {
-    agjk__minkowski_support(sv->md, *d, d2, s, direct);
+                                        int direct, const agjk_vec3 *db) {
+    agjk__minkowski_support(sv->md, *d, d2, s, direct, db);
     if (sv->md->rescaled != 1.0) follow_rescale(sv, d);
 }
 static AGJK__NOINLINE void support_rare(solver *sv, agjk_vec3 *d, agjk__vertex *s) {
-    support(sv, d, 0.0, s, AGJK__SUPPORT_CALL);
+    support(sv, d, 0.0, s, AGJK__SUPPORT_CALL, NULL);
 }
 
 /* Checks a fresh support s in direction d: a bad callback output ends the
@@ -307,7 +311,7 @@ static unsigned shallow_faces(const agjk_vec3 w[4], double noise) {
  * of the products at the last step of an overlapping query. */
 static int deep_enclosure(const solver *sv, double noise) {
     if (!sv->inside_reported) return 0;
-    const agjk__inside *in = &sv->inside;
+    const agjk__inside *in = &sv->notes.inside;
     const agjk_vec3 *w = sv->w;
     double limit = DEPTH_FACTOR * noise;
     limit = 1.01 * limit * limit;
@@ -547,7 +551,8 @@ static AGJK__ALWAYS_INLINE int update_simplex(solver *sv, const agjk__vertex *s,
     }
     ++n;
     double l[4];
-    unsigned mask = agjk__simplex_project_gjk_inside(sv->w, n, l, x, &sv->inside);
+    sv->notes.turned_valid = 0;
+    unsigned mask = agjk__simplex_project_gjk_noted(sv->w, n, l, x, &sv->notes);
     if ((mask & 0xFu) == 0xFu) {
         sv->inside_reported = (mask & AGJK__INSIDE_REPORTED) != 0;
         for (int i = 0; i < 4; ++i) sv->lambda[i] = l[i];
@@ -811,6 +816,8 @@ static AGJK__ALWAYS_INLINE void solve(agjk__minkowski *md, const agjk__solve_inp
     sv.md = md;
     sv.in = in;
     sv.count = 0;
+    sv.notes.rotation = &md->rotation[0][0];
+    sv.notes.turned_valid = 0;
 
     out->outcome = AGJK__ITERATION_CAP;
     out->gap = INFINITY;
@@ -886,13 +893,16 @@ static AGJK__ALWAYS_INLINE void solve(agjk__minkowski *md, const agjk__solve_inp
         out->iterations = k + 1;
         agjk_vec3 d = k == 0 ? d0 : sv.x;
         if (k > 0) {
-            /* A plain step's direction is x itself, whose |x|^2 is known. */
+            /* A plain step's direction is x itself, whose |x|^2 is known,
+             * and R^T x too when the projection turned it (a face). */
             double d2 = sv.x2;
+            const agjk_vec3 *db = sv.notes.turned_valid ? &sv.notes.turned : NULL;
             if (sv.m.active) {
                 d = agjk__momentum_direction(&sv.m, k, sv.x);
                 d2 = 0.0;
+                db = NULL;
             }
-            support(&sv, &d, d2, &s, AGJK__SUPPORT_DIRECT_LOOP);
+            support(&sv, &d, d2, &s, AGJK__SUPPORT_DIRECT_LOOP, db);
             ++out->support_calls;
             if (support_ends_query(&sv, d, &s, out)) break;
             /* Adaptive method: a first momentum support that found s_0 again

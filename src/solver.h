@@ -213,7 +213,8 @@ static AGJK__ALWAYS_INLINE int agjk__first_support(agjk__minkowski *md,
     agjk_vec3 x = v3_load_scalars(&in->x0); /* (written just before, by other code) */
     /* The problem's size is not known yet: give the callbacks a unit-size
      * direction (exact power-of-two scaling of x_0). */
-    agjk__minkowski_support(md, v3_scale_to_unit(x, v3_maxabs(x)), 0.0, s, AGJK__SUPPORT_DIRECT);
+    agjk__minkowski_support(md, v3_scale_to_unit(x, v3_maxabs(x)), 0.0, s, AGJK__SUPPORT_DIRECT,
+                            NULL);
     /* A shrink during that first call already put s in new units; x_0, given
      * in the caller's units, needs it too. */
     double shrunk = md->rescaled;

@@ -360,7 +360,7 @@ static long double det_l(agjk_vec3 p, agjk_vec3 q, agjk_vec3 r) {
            (long double)p.z * ((long double)q.x * r.y - (long double)q.y * r.x);
 }
 
-/* agjk__simplex_project_gjk_inside on a tetrahedron: the same answer, bit
+/* agjk__simplex_project_gjk_noted on a tetrahedron: the same answer, bit
  * for bit, as agjk__simplex_project_gjk (mask, weights), and when it reports
  * its inside test's data (AGJK__INSIDE_REPORTED), an enclosure whose depth
  * numerators, squared edge lengths and orientation match a long-double
@@ -368,10 +368,12 @@ static long double det_l(agjk_vec3 p, agjk_vec3 q, agjk_vec3 r) {
  * them). */
 static void check_inside(const agjk_vec3 *w, unsigned mask, const double l[4], const char *what,
                          int i) {
-    agjk__inside in;
+    agjk__projection_notes notes;
+    notes.rotation = NULL;
+    const agjk__inside *inside = &notes.inside;
     double li[4];
     agjk_vec3 pi;
-    unsigned mi = agjk__simplex_project_gjk_inside(w, 4, li, &pi, &in);
+    unsigned mi = agjk__simplex_project_gjk_noted(w, 4, li, &pi, &notes);
     TU_ENSURE((mi & ~AGJK__INSIDE_REPORTED) == mask && memcmp(li, l, sizeof li) == 0,
               "%s %d: the inside variant answers mask 0x%x, plain 0x%x", what, i, mi, mask);
     if (!(mi & AGJK__INSIDE_REPORTED)) return;
@@ -379,20 +381,48 @@ static void check_inside(const agjk_vec3 *w, unsigned mask, const double l[4], c
     TU_ENSURE(mask == 0xFu, "%s %d: inside data with mask 0x%x", what, i, mask);
     agjk_vec3 a = w[3], e[3] = {tu_sub(w[0], a), tu_sub(w[1], a), tu_sub(w[2], a)};
     long double vol = det_l(e[0], e[1], e[2]);
-    TU_ENSURE(in.orientation == (vol < 0 ? -1.0 : 1.0), "%s %d: orientation %g, volume %Lg", what,
-              i, in.orientation, vol);
+    TU_ENSURE(inside->orientation == (vol < 0 ? -1.0 : 1.0), "%s %d: orientation %g, volume %Lg", what,
+              i, inside->orientation, vol);
     for (int f = 0; f < 3; ++f) {
         int j = (f + 1) % 3, k = (f + 2) % 3;
-        long double h = -(long double)in.orientation * det_l(a, e[j], e[k]);
+        long double h = -(long double)inside->orientation * det_l(a, e[j], e[k]);
         long double scale = (long double)tu_norm(a) * tu_norm(e[j]) * tu_norm(e[k]);
-        TU_ENSURE(h > 0 && fabsl((long double)in.h[f] - h) <= 16 * DBL_EPSILON * scale,
+        TU_ENSURE(h > 0 && fabsl((long double)inside->h[f] - h) <= 16 * DBL_EPSILON * scale,
                   "%s %d: face %d depth numerator %.17g, long double %.17Lg", what, i, f,
-                  in.h[f], h);
+                  inside->h[f], h);
         long double g = (long double)e[f].x * e[f].x + (long double)e[f].y * e[f].y +
                         (long double)e[f].z * e[f].z;
-        TU_ENSURE(fabsl((long double)in.g[f] - g) <= 4 * DBL_EPSILON * g,
-                  "%s %d: |e_%d|^2 %.17g, long double %.17Lg", what, i, f, in.g[f], g);
+        TU_ENSURE(fabsl((long double)inside->g[f] - g) <= 4 * DBL_EPSILON * g,
+                  "%s %d: |e_%d|^2 %.17g, long double %.17Lg", what, i, f, inside->g[f], g);
     }
+}
+
+/* With the point asked for in B's frame too (a fixed rotation R): the same
+ * answer, bit for bit, and when the point was turned (GJK's face case), R^T
+ * of the point to a few ulps of its size, in long double. */
+static long turned_points;
+static void check_turned(const agjk_vec3 *w, int n, unsigned mask, const double l[4],
+                         agjk_vec3 p, const char *what, int i) {
+    static const double r[9] = {0.36, 0.48, -0.8, -0.8, 0.6, 0.0, 0.48, 0.64, 0.6};
+    agjk__projection_notes notes;
+    notes.rotation = r;
+    notes.turned_valid = 0;
+    double lt[4] = {NAN, NAN, NAN, NAN}; /* (as check_gjk's: entries past n may stay) */
+    agjk_vec3 pt;
+    unsigned mt = agjk__simplex_project_gjk_noted(w, n, lt, &pt, &notes);
+    TU_ENSURE((mt & ~AGJK__INSIDE_REPORTED) == mask && memcmp(lt, l, sizeof lt) == 0 &&
+                  memcmp(&pt, &p, sizeof p) == 0,
+              "%s %d: the answer changed when the point was turned too", what, i);
+    if (!notes.turned_valid) return;
+    ++turned_points;
+    long double q[3];
+    for (int k = 0; k < 3; k++)
+        q[k] = (long double)r[k] * p.x + (long double)r[3 + k] * p.y + (long double)r[6 + k] * p.z;
+    double size = tu_norm(p);
+    TU_ENSURE(fabsl(notes.turned.x - q[0]) <= 8 * DBL_EPSILON * size &&
+                  fabsl(notes.turned.y - q[1]) <= 8 * DBL_EPSILON * size &&
+                  fabsl(notes.turned.z - q[2]) <= 8 * DBL_EPSILON * size,
+              "%s %d: turned point off R^T x by more than 8 ulps of |x| = %g", what, i, size);
 }
 
 /* Runs agjk__simplex_project_gjk and its fast path alone on w[0..n-1] (the
@@ -424,6 +454,7 @@ static unsigned check_gjk(const agjk_vec3 *w, int n, const char *what, int i, gj
         TU_ENSURE(mf == mask, "%s %d: fast mask 0x%x, full 0x%x", what, i, mf, mask);
     }
     if (n == 4) check_inside(w, mask, l, what, i);
+    check_turned(w, n, mask, l, p, what, i);
     for (int k = 0; k < 4; k++) lambda[k] = l[k];
     *point = p;
     return mask;
@@ -435,7 +466,7 @@ static void print_counts(const char *what, const gjk_counts *c) {
         if (c->calls[n])
             printf("  n=%d %ld/%ld (fallback %.2f%%)", n, c->fast[n], c->calls[n],
                    100.0 * (double)(c->calls[n] - c->fast[n]) / (double)c->calls[n]);
-    printf("; inside data %ld\n", inside_reported);
+    printf("; inside data %ld, turned points %ld\n", inside_reported, turned_points);
 }
 
 START_TEST(gjk_random_simplices) {
@@ -603,6 +634,7 @@ START_TEST(gjk_like_runs) {
     print_counts("gjk_like_runs", &counts);
     /* GJK's last step on overlapping shapes is among these runs. */
     TU_ENSURE(inside_reported > 0, "no enclosure reported by the inside test");
+    TU_ENSURE(turned_points > 0, "no point turned by the face case");
     /* GJK's own simplices: the fallback is the exception (origin inside,
      * degenerate or ill-conditioned simplices). */
     for (int n = 2; n <= 4; n++)
