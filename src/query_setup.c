@@ -210,6 +210,7 @@ int agjk__query_prepare(const agjk_shape *a, const agjk_pose *pose_a, const agjk
     if (!isfinite(md->margin)) return 0;
     in->boolean_mode = 0;
     in->x0 = initial_guess(in, pose_a, md);
+    in->x0_along = 0;
     in->keep_points = in->want_witness;
     in->track_flat = 0;
     in->want_simplex = 0;

@@ -142,6 +142,12 @@ typedef struct agjk__solve_input {
     int max_iterations;
     agjk_vec3 x0;       /* initial guess (A's frame), non-zero */
     int x0_given;       /* x0 is a caller's or a cache's guess, not c_A - c_B */
+    /* With x0_along set, a vector along x0 (finite, non-zero) that is known
+     * before x0's length: the first support is taken along it, and its
+     * result is x0's (the cache's extrapolated direction, whose weight
+     * takes square roots and divisions that the support need not wait for). */
+    agjk_vec3 along;
+    int x0_along;
     /* Keep the points of A and B of the active set (witness points, EPA, the
      * cache); otherwise only the points of D move. */
     int keep_points;
@@ -212,9 +218,10 @@ static AGJK__ALWAYS_INLINE int agjk__first_support(agjk__minkowski *md,
                                                    agjk_vec3 *x_out) {
     agjk_vec3 x = v3_load_scalars(&in->x0); /* (written just before, by other code) */
     /* The problem's size is not known yet: give the callbacks a unit-size
-     * direction (exact power-of-two scaling of x_0). */
-    agjk__minkowski_support(md, v3_scale_to_unit(x, v3_maxabs(x)), 0.0, s, AGJK__SUPPORT_DIRECT,
-                            NULL);
+     * direction (exact power-of-two scaling of x_0, or of a vector along it). */
+    agjk_vec3 along = in->x0_along ? v3_load_scalars(&in->along) : x;
+    agjk__minkowski_support(md, v3_scale_to_unit(along, v3_maxabs(along)), 0.0, s,
+                            AGJK__SUPPORT_DIRECT, NULL);
     /* A shrink during that first call already put s in new units; x_0, given
      * in the caller's units, needs it too. */
     double shrunk = md->rescaled;
