@@ -843,10 +843,11 @@ static AGJK__ALWAYS_INLINE void solve(agjk__minkowski *md, const agjk__solve_inp
         out->a = out->b = v3(0.0, 0.0, 0.0);
         return;
     }
-    /* Not for a query started from a guess (a cache's or a caller's): such
-     * queries are short (2.8 supports on moving ellipsoids), and reading an
-     * ellipsoid's data costs about as much as it then saves. */
-    if (!in->x0_given && in->warm_count == 0) agjk__minkowski_bound_points(md);
+    /* For warm starts too: on moving ellipsoids (2.8 supports per query)
+     * reading the data costs about what the support path's skipped tests
+     * save, and B's point then takes the loop's short path (minkowski.h):
+     * fast-moving ellipsoid pairs 2-4% faster with the cache. */
+    agjk__minkowski_bound_points(md);
 
     sv.lambda[0] = 1.0;
     sv.lambda[1] = sv.lambda[2] = sv.lambda[3] = 0.0;
