@@ -133,7 +133,12 @@ static unsigned project_interior(const agjk_vec3 *w, int n, double lambda[4], ag
         lambda[1] = l1 * inv;
         lambda[2] = l2 * inv;
         lambda[0] = 1.0 - lambda[1] - lambda[2];
-        *x = v3_add(v3_lerp2(w[0], lambda[0], w[1], lambda[1]), v3_scale(w[2], lambda[2]));
+        /* The foot itself from the plane's normal n: n <n, w_0> / |n|^2, as
+         * the GJK projection's face case forms it (accurate when the foot is
+         * much nearer the origin than the points), and without waiting for
+         * the weights: the warm query's first steps all wait for x. */
+        agjk_vec3 nrm = v3_cross(e1, e2);
+        *x = v3_scale(nrm, v3_dot(nrm, w[0]) / v3_norm2(nrm));
         return 0x7u;
     }
     if (n == 4) {
