@@ -67,16 +67,24 @@ check-tsan:
 # Valgrind: every compiled test program of `make check` (scripts, including
 # those listed in CHECK_BINS, are skipped).
 # Check forks each test by default; CK_FORK=no keeps them in the traced
-# process. Note: valgrind runs x87 long double at double precision, so the
-# reference solver is less precise there (the tests' slack absorbs it).
+# process. A memory error (memcheck's exit code 99) or a crash fails the
+# target. Valgrind runs x87 long double at double precision, so the tests'
+# long-double references lose their precision there (test_simplex's
+# adversarial simplices, test_methods' reference solver): a test that only
+# fails its assertions is reported and counted, and `make check` runs those
+# assertions natively.
 VALGRIND ?= valgrind
-VALGRIND_FLAGS := --error-exitcode=1 --leak-check=full --errors-for-leak-kinds=definite \
+VALGRIND_FLAGS := --error-exitcode=99 --leak-check=full --errors-for-leak-kinds=definite \
                   --track-origins=yes -q
 check-valgrind:
 	$(MAKE) lib $(CHECK_BINS)
-	@pass=0; fail=0; skip=0; for t in $(CHECK_BINS); do \
+	@pass=0; fail=0; skip=0; numeric=0; for t in $(CHECK_BINS); do \
 	    if ! head -c 4 $$t | grep -q ELF; then skip=$$((skip+1)); continue; fi; \
 	    echo "== valgrind $$t"; \
-	    if CK_FORK=no $(VALGRIND) $(VALGRIND_FLAGS) ./$$t >/dev/null; then pass=$$((pass+1)); \
-	    else fail=$$((fail+1)); echo "FAILED under valgrind: $$t"; fi; done; \
-	echo "valgrind: $$pass passed, $$fail failed, $$skip scripts skipped"; test $$fail -eq 0
+	    CK_FORK=no $(VALGRIND) $(VALGRIND_FLAGS) ./$$t >/dev/null; status=$$?; \
+	    if [ $$status -eq 0 ]; then pass=$$((pass+1)); \
+	    elif [ $$status -eq 1 ]; then numeric=$$((numeric+1)); \
+	        echo "   (assertions failed, no memory error: long double at double precision)"; \
+	    else fail=$$((fail+1)); echo "FAILED under valgrind (exit $$status): $$t"; fi; done; \
+	echo "valgrind: $$pass passed, $$numeric with assertions failed only, $$fail failed, $$skip scripts skipped"; \
+	test $$fail -eq 0
