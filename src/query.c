@@ -24,7 +24,12 @@ static AGJK__ALWAYS_INLINE void result_reset(agjk_result *r) {
     for (int i = 0; i < 8; ++i) r->reserved[i] = 0.0;
 }
 
-/* The normal of iteration 0's separating plane, -x / ||x|| in world frame,
+/* The normal of a separating plane found along x, -x / ||x|| in world frame. */
+static AGJK__ALWAYS_INLINE agjk_vec3 plane_normal(const agjk_pose *pose_a, agjk_vec3 x) {
+    return m3_mul(&pose_a->rotation[0][0], v3_normalize(v3_neg(x)));
+}
+
+/* The same for iteration 0's separating plane,
  * x in the direction of x_0 (a power-of-two multiple of it, or x_0
  * normalised, when the first support changed the units). When x_0 is
  * c_A - c_B as the query set it (no guess given, the frames' origins
@@ -39,7 +44,7 @@ static AGJK__ALWAYS_INLINE agjk_vec3 start_normal(const agjk_pose *pose_a, const
                                                   const agjk__solve_input *in, agjk_vec3 x) {
     if (!in->x0_given && md->translation_size >= 0x1p-900)
         return v3_normalize(v3_sub(pose_b->translation, pose_a->translation));
-    return m3_mul(&pose_a->rotation[0][0], v3_normalize(v3_neg(x)));
+    return plane_normal(pose_a, x);
 }
 
 /* The query, compiled once per entry point: agjk_distance() and
@@ -113,7 +118,7 @@ static AGJK__ALWAYS_INLINE agjk_status run_query(const agjk_shape *a, const agjk
     if (out.outcome == AGJK__SEPARATED_EARLY) {
         agjk_vec3 x = v3_load_scalars(&out.direction);
         result->normal = on_start_plane ? start_normal(pose_a, pose_b, &md, &in, x)
-                                        : m3_mul(&pose_a->rotation[0][0], v3_normalize(v3_neg(x)));
+                                        : plane_normal(pose_a, x);
         return result->status = AGJK_STATUS_SEPARATED;
     }
 
