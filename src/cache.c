@@ -224,6 +224,7 @@ static int load_direction(const agjk_cache *cache, agjk__solve_input *in, int ha
     if (v3_maxabs(x0) > 0.0) {
         in->x0 = x0;
         in->x0_given = 1;
+        in->x0_unit = 0.0;
         /* (Far out of range, the product of two norms: x_0 itself then.) */
         double m = v3_maxabs(along);
         in->along = along;
@@ -297,6 +298,7 @@ int agjk__cache_load(const agjk_cache *cache, const agjk_shape *a, const agjk_sh
     if (mask == 0xFu || v3_maxabs(x) == 0.0) x = cache->direction;
     if (v3_maxabs(x) == 0.0) x = v3(1.0, 0.0, 0.0);
     in->x0 = x;
+    in->x0_unit = 0.0;
     in->warm_count = n;
     return 1;
 }

@@ -114,7 +114,7 @@ agjk_status agjk_signed_distance(const agjk_shape *a, const agjk_pose *pose_a,
     result->status = AGJK_STATUS_INVALID_INPUT;
     agjk__minkowski md;
     agjk__solve_input in;
-    if (!agjk__query_prepare(a, pose_a, b, pose_b, options, &md, &in))
+    if (!agjk__query_prepare(a, pose_a, b, pose_b, options, 0, &md, &in))
         return result->status;
     int witness = in.want_witness;
     double tolerance = in.tolerance; /* the caller's: GJK's may be tightened below */
@@ -151,6 +151,7 @@ agjk_status agjk_signed_distance(const agjk_shape *a, const agjk_pose *pose_a,
         in.tolerance *= 0.25 * target / (hi - lo);
         if (!(in.tolerance > 0.0)) in.tolerance = DBL_MIN;
         in.x0 = g.x; /* solver units: the scale is already set */
+        in.x0_unit = 0.0;
         run_gjk(&md, &in, &out, &g);
         result->gjk_iterations += g.iterations;
         result->support_calls += g.support_calls;

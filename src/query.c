@@ -61,9 +61,9 @@ static AGJK__ALWAYS_INLINE agjk_status run_query(const agjk_shape *a, const agjk
     result_reset(result);
     agjk__minkowski md;
     agjk__solve_input in;
-    if (!agjk__query_prepare(a, pose_a, b, pose_b, options, &md, &in))
+    if (!agjk__query_prepare(a, pose_a, b, pose_b, options, boolean_mode, &md, &in))
         return result->status;
-    in.boolean_mode = boolean_mode;
+    in.boolean_mode = boolean_mode; /* (as set there: a constant for the code below) */
     in.want_witness = in.want_witness && !boolean_mode;
     in.keep_points = in.want_witness || cache; /* the cache keeps the simplex */
     in.track_flat = cache != NULL;

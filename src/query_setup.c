@@ -95,9 +95,27 @@ static AGJK__NOINLINE int poses_are_valid(const agjk_pose *pose_a, const agjk_po
     return pose_is_valid(pose_a) && pose_is_valid(pose_b);
 }
 
-/* Prepares the relative transform (shapes and poses validated). */
+/* x0 = R_A^T (t_A - t_B) has the world offset's 2-norm, to the rounding
+ * of an orthonormal R_A, so max |x0_i| lies within sqrt(3) of the offset's
+ * max |t_i| = m: twice the power of two that brings m to [1, 2) brings x0
+ * to [1, 8) (agjk__solve_input.x0_unit), from m's exponent bits. 0 for
+ * offsets near underflow or overflow, and for concentric frames. */
+static double offset_unit(double m) {
+    uint64_t bits;
+    memcpy(&bits, &m, sizeof bits);
+    int biased = (int)(bits >> 52); /* m >= 0: exponent e + 1023 */
+    if (biased < 1023 - 900 || biased > 1023 + 900) return 0.0;
+    bits = (uint64_t)(2047 - biased) << 52; /* 2^(1 - e) */
+    double unit;
+    memcpy(&unit, &bits, sizeof unit);
+    return unit;
+}
+
+/* Prepares the relative transform (shapes and poses validated); also returns
+ * the world offset t_B - t_A and offset_unit's factor for it. */
 static void minkowski_init(agjk__minkowski *md, const agjk_shape *a, const agjk_pose *pose_a,
-                           const agjk_shape *b, const agjk_pose *pose_b, int hint_a, int hint_b) {
+                           const agjk_shape *b, const agjk_pose *pose_b, int hint_a, int hint_b,
+                           agjk_vec3 *offset, double *unit) {
     md->support_a = a->support;
     md->support_b = b->support;
     md->data_a = a->data;
@@ -135,7 +153,10 @@ static void minkowski_init(agjk__minkowski *md, const agjk_shape *a, const agjk_
      * plain assignment) the load cannot take its data from the store buffer
      * and waits for the stores to reach the cache: 7 ns of a 63 ns
      * one-support query on ellipsoids, 4 of 50 on boxes. */
-    agjk_vec3 t = m3_tmul(ra, v3_sub(pose_b->translation, pose_a->translation));
+    agjk_vec3 delta = v3_sub(pose_b->translation, pose_a->translation);
+    *offset = delta;
+    *unit = offset_unit(v3_maxabs(delta));
+    agjk_vec3 t = m3_tmul(ra, delta);
     double stored[3] = {t.x, t.y, t.z};
     memcpy(&md->translation, stored, sizeof stored);
     md->translation_size = v3_maxabs(md->translation);
@@ -200,17 +221,29 @@ static agjk_vec3 initial_guess(const agjk__solve_input *in, const agjk_pose *pos
 }
 
 int agjk__query_prepare(const agjk_shape *a, const agjk_pose *pose_a, const agjk_shape *b,
-                        const agjk_pose *pose_b, const agjk_options *options,
+                        const agjk_pose *pose_b, const agjk_options *options, int boolean_mode,
                         agjk__minkowski *md, agjk__solve_input *in) {
     int hint_a, hint_b;
     if (!read_options(options, in, &hint_a, &hint_b) || !shape_is_valid(a) ||
         !shape_is_valid(b) || !pose_a || !pose_b || !poses_are_valid(pose_a, pose_b))
         return 0;
-    minkowski_init(md, a, pose_a, b, pose_b, hint_a, hint_b);
+    agjk_vec3 offset;
+    double unit;
+    minkowski_init(md, a, pose_a, b, pose_b, hint_a, hint_b, &offset, &unit);
     if (!isfinite(md->margin)) return 0;
-    in->boolean_mode = 0;
+    in->boolean_mode = boolean_mode;
     in->x0 = initial_guess(in, pose_a, md);
     in->x0_along = 0;
+    /* Only a Boolean query's first support is on the chain to its answer: a
+     * distance query's takes the general path, and its answers stay what
+     * they were bit for bit (warm starts move by their last bits). */
+    in->x0_unit = boolean_mode && !in->x0_given ? unit : 0.0;
+    in->x0_b_given = in->x0_unit > 0.0 && agjk__is_ellipsoid(md->support_b);
+    if (in->x0_b_given) {
+        agjk_vec3 x0_b = m3_tmul(&pose_b->rotation[0][0], v3_neg(offset));
+        double stored[3] = {x0_b.x, x0_b.y, x0_b.z}; /* (see md->translation's) */
+        memcpy(&in->x0_b, stored, sizeof stored);
+    }
     in->keep_points = in->want_witness;
     in->track_flat = 0;
     in->want_simplex = 0;

@@ -11,11 +11,11 @@ extern const agjk_options agjk__default_options;
 
 /* Checks the arguments (shapes, poses, options of any caller version: NULL
  * for the defaults) and, when they are valid, fills *md (the relative
- * transform) and *in (the solver input for a distance query: the options'
- * method, tolerance, cap and witness flag, x_0, no Boolean exit). Returns 0
- * for invalid input. */
+ * transform) and *in (the solver input: the options' method, tolerance, cap
+ * and witness flag, x_0, the Boolean exit when boolean_mode). Returns 0 for
+ * invalid input. */
 int agjk__query_prepare(const agjk_shape *a, const agjk_pose *pose_a, const agjk_shape *b,
-                        const agjk_pose *pose_b, const agjk_options *options,
+                        const agjk_pose *pose_b, const agjk_options *options, int boolean_mode,
                         agjk__minkowski *md, agjk__solve_input *in);
 
 /* A point of A's frame in world frame (witness points). */

@@ -148,6 +148,20 @@ typedef struct agjk__solve_input {
      * takes square roots and divisions that the support need not wait for). */
     agjk_vec3 along;
     int x0_along;
+    /* A power of two that brings x0 (c_A - c_B, no guess) to a unit-size
+     * direction, max |x0_i| in [1, 8): known from the world offset before
+     * x0 is (agjk__query_prepare), so that the first support need not wait
+     * for x0's own max and exponent. 0 when not known. */
+    double x0_unit;
+    /* With x0_unit and B an ellipsoid (x0_b_given): x0 turned into B's
+     * frame, R^T x0, formed from the world offset as R_B^T (t_A - t_B), so
+     * that B's first direction need not wait for x0 and then for its turn
+     * (a rounding of R^T x0, as a face's turned foot is; see
+     * agjk__minkowski_support's db_given). B's ellipsoid support is on the
+     * chain to a Boolean query's first plane test; for other shapes the
+     * turn is not, and its instructions would only cost. */
+    agjk_vec3 x0_b;
+    int x0_b_given;
     /* Keep the points of A and B of the active set (witness points, EPA, the
      * cache); otherwise only the points of D move. */
     int keep_points;
@@ -220,8 +234,16 @@ static AGJK__ALWAYS_INLINE int agjk__first_support(agjk__minkowski *md,
     /* The problem's size is not known yet: give the callbacks a unit-size
      * direction (exact power-of-two scaling of x_0, or of a vector along it). */
     agjk_vec3 along = in->x0_along ? v3_load_scalars(&in->along) : x;
-    agjk__minkowski_support(md, v3_scale_to_unit(along, v3_maxabs(along)), 0.0, s,
-                            AGJK__SUPPORT_DIRECT, NULL);
+    if (!in->x0_given && in->x0_unit > 0.0 && in->x0_b_given) {
+        agjk_vec3 db = v3_scale(v3_load_scalars(&in->x0_b), in->x0_unit);
+        agjk__minkowski_support(md, v3_scale(x, in->x0_unit), 0.0, s, AGJK__SUPPORT_DIRECT_FIRST,
+                                &db);
+    } else {
+        agjk_vec3 unit = !in->x0_given && in->x0_unit > 0.0
+                             ? v3_scale(x, in->x0_unit)
+                             : v3_scale_to_unit(along, v3_maxabs(along));
+        agjk__minkowski_support(md, unit, 0.0, s, AGJK__SUPPORT_DIRECT, NULL);
+    }
     /* A shrink during that first call already put s in new units; x_0, given
      * in the caller's units, needs it too. */
     double shrunk = md->rescaled;

@@ -592,7 +592,7 @@ START_TEST(four_point_starts) {
     for (int kind = 0; kind < 4; ++kind) {
         agjk__minkowski md;
         agjk__solve_input setup;
-        TU_CHECK(agjk__query_prepare(&a, &pa, &b, &pb, NULL, &md, &setup));
+        TU_CHECK(agjk__query_prepare(&a, &pa, &b, &pb, NULL, 0, &md, &setup));
         /* Vertices of D: the support in direction -(sx, sy, sz) is the
          * corner on that side. */
         agjk__vertex corner[8];
