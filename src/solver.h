@@ -234,16 +234,19 @@ static AGJK__ALWAYS_INLINE int agjk__first_support(agjk__minkowski *md,
     /* The problem's size is not known yet: give the callbacks a unit-size
      * direction (exact power-of-two scaling of x_0, or of a vector along it). */
     agjk_vec3 along = in->x0_along ? v3_load_scalars(&in->along) : x;
-    if (!in->x0_given && in->x0_unit > 0.0 && in->x0_b_given) {
-        agjk_vec3 db = v3_scale(v3_load_scalars(&in->x0_b), in->x0_unit);
-        agjk__minkowski_support(md, v3_scale(x, in->x0_unit), 0.0, s, AGJK__SUPPORT_DIRECT_FIRST,
-                                &db);
+    /* (One call site: the support path is expanded once here.) */
+    agjk_vec3 unit, db = x;
+    int db_given = 0;
+    if (!in->x0_given && in->x0_unit > 0.0) {
+        unit = v3_scale(x, in->x0_unit);
+        if (in->x0_b_given) {
+            db = v3_scale(v3_load_scalars(&in->x0_b), in->x0_unit);
+            db_given = 1;
+        }
     } else {
-        agjk_vec3 unit = !in->x0_given && in->x0_unit > 0.0
-                             ? v3_scale(x, in->x0_unit)
-                             : v3_scale_to_unit(along, v3_maxabs(along));
-        agjk__minkowski_support(md, unit, 0.0, s, AGJK__SUPPORT_DIRECT, NULL);
+        unit = v3_scale_to_unit(along, v3_maxabs(along));
     }
+    agjk__minkowski_support(md, unit, 0.0, s, AGJK__SUPPORT_DIRECT_FIRST, db_given ? &db : NULL);
     /* A shrink during that first call already put s in new units; x_0, given
      * in the caller's units, needs it too. */
     double shrunk = md->rescaled;
