@@ -151,7 +151,6 @@ agjk_status agjk_signed_distance(const agjk_shape *a, const agjk_pose *pose_a,
         in.tolerance *= 0.25 * target / (hi - lo);
         if (!(in.tolerance > 0.0)) in.tolerance = DBL_MIN;
         in.x0 = g.x; /* solver units: the scale is already set */
-        in.x0_unit = 0.0;
         run_gjk(&md, &in, &out, &g);
         result->gjk_iterations += g.iterations;
         result->support_calls += g.support_calls;

@@ -151,7 +151,8 @@ typedef struct agjk__solve_input {
     /* A power of two that brings x0 (c_A - c_B, no guess) to a unit-size
      * direction, max |x0_i| in [1, 8): known from the world offset before
      * x0 is (agjk__query_prepare), so that the first support need not wait
-     * for x0's own max and exponent. 0 when not known. */
+     * for x0's own max and exponent. 0 when not known: distance queries
+     * (agjk__query_prepare), a guess, and a warm start's x0 (cache.c). */
     double x0_unit;
     /* With x0_unit and B an ellipsoid (x0_b_given): x0 turned into B's
      * frame, R^T x0, formed from the world offset as R_B^T (t_A - t_B), so
