@@ -190,11 +190,14 @@ static AGJK__COLD unsigned project_triangle(const agjk_vec3 *p, int n, int i, in
     return best.mask;
 }
 
-static AGJK__COLD unsigned project_tetrahedron(const agjk_vec3 *p, double lambda[4], agjk_vec3 *point) {
-    /* Write the origin as q + mu_1 e_1 + mu_2 e_2 + mu_3 e_3 with q the vertex
-     * nearest the origin and e_i the edges from it, and solve by Cramer's rule:
-     * every rounding error then scales with |q| and the edge lengths rather than
-     * with the distance of the far vertices to the origin. */
+/* The origin's barycentric coordinates in the tetrahedron p[0..3], times
+ * its oriented volume *sum > 0, into w: 0 when the tetrahedron is
+ * degenerate. The origin is written as q + mu_1 e_1 + mu_2 e_2 + mu_3 e_3
+ * with q the vertex nearest the origin and e_i the edges from it, and
+ * solved by Cramer's rule: every rounding error then scales with |q| and the
+ * edge lengths rather than with the distance of the far vertices to the
+ * origin. */
+static inline int apex_coordinates(const agjk_vec3 *p, double w[4], double *sum) {
     int apex = 0;
     for (int v = 1; v < 4; ++v)
         if (v3_norm2(p[v]) < v3_norm2(p[apex])) apex = v;
@@ -207,26 +210,37 @@ static AGJK__COLD unsigned project_tetrahedron(const agjk_vec3 *p, double lambda
     agjk_vec3 c23 = v3_cross(e2, e3);
     double vol = v3_dot(e1, c23);
     double scale2 = v3_norm2(e1) * v3_norm2(e2) * v3_norm2(e3);
+    if (!(vol * vol > DEGENERATE_RELATIVE * DEGENERATE_RELATIVE * scale2)) return 0;
+    double n1 = v3_dot(nq, c23);
+    double n2 = v3_dot(e1, v3_cross(nq, e3));
+    double n3 = v3_dot(e1, v3_cross(e2, nq));
+    double n0 = vol - n1 - n2 - n3;
+    /* Orient so that the volume is positive; then a negative coordinate
+     * means the origin lies beyond the face opposite that vertex. */
+    double sgn = vol > 0.0 ? 1.0 : -1.0;
+    w[apex] = sgn * n0;
+    w[other[0]] = sgn * n1;
+    w[other[1]] = sgn * n2;
+    w[other[2]] = sgn * n3;
+    *sum = sgn * vol;
+    return 1;
+}
+
+/* The enclosed origin's weights from them, when every coordinate is
+ * positive: 0xF, else 0. */
+static inline unsigned enclosed_weights(const double w[4], double sum, double lambda[4],
+                                        agjk_vec3 *point) {
+    if (!(w[0] > 0.0 && w[1] > 0.0 && w[2] > 0.0 && w[3] > 0.0)) return 0u;
+    for (int v = 0; v < 4; ++v) lambda[v] = w[v] / sum;
+    *point = v3(0.0, 0.0, 0.0);
+    return 0xFu;
+}
+
+static AGJK__COLD unsigned project_tetrahedron(const agjk_vec3 *p, double lambda[4], agjk_vec3 *point) {
     double face_sign[4] = {-1.0, -1.0, -1.0, -1.0}; /* <= 0: try the face opposite that vertex */
-    if (vol * vol > DEGENERATE_RELATIVE * DEGENERATE_RELATIVE * scale2) {
-        double n1 = v3_dot(nq, c23);
-        double n2 = v3_dot(e1, v3_cross(nq, e3));
-        double n3 = v3_dot(e1, v3_cross(e2, nq));
-        double n0 = vol - n1 - n2 - n3;
-        /* Orient so that the volume is positive; then a negative coordinate
-         * means the origin lies beyond the face opposite that vertex. */
-        double sgn = vol > 0.0 ? 1.0 : -1.0;
-        double w[4];
-        w[apex] = sgn * n0;
-        w[other[0]] = sgn * n1;
-        w[other[1]] = sgn * n2;
-        w[other[2]] = sgn * n3;
-        double sum = sgn * vol;
-        if (w[0] > 0.0 && w[1] > 0.0 && w[2] > 0.0 && w[3] > 0.0) {
-            for (int v = 0; v < 4; ++v) lambda[v] = w[v] / sum;
-            *point = v3(0.0, 0.0, 0.0);
-            return 0xFu;
-        }
+    double w[4], sum;
+    if (apex_coordinates(p, w, &sum)) {
+        if (enclosed_weights(w, sum, lambda, point)) return 0xFu;
         for (int v = 0; v < 4; ++v) face_sign[v] = w[v];
     }
     static const int faces[4][3] = {{1, 2, 3}, {0, 2, 3}, {0, 1, 3}, {0, 1, 2}};
@@ -580,6 +594,20 @@ static unsigned tetra_inside(const agjk_vec3 *w, const agjk_vec3 *e, const doubl
     return 0xFu;
 }
 
+/* A thin tetrahedron's projection (tetra_inside's *thin): what the
+ * exhaustive projection gives, its enclosed case computed here, in the hot
+ * path (as a call to the exhaustive projection, kept with the cold code,
+ * it cost overlapping ellipsoids with Nesterov 5% of their time). */
+static unsigned thin_inside(const agjk_vec3 *w, int exhaustive, double lambda[4],
+                            agjk_vec3 *point) {
+    double c[4], sum;
+    if (apex_coordinates(w, c, &sum)) {
+        unsigned mask = enclosed_weights(c, sum, lambda, point);
+        if (mask) return tighten(mask, lambda, 4); /* as agjk__simplex_project */
+    }
+    return decline(w, 4, exhaustive, lambda, point);
+}
+
 /* The thin face of the tetrahedron leaving out w_k (taken = 1 + k), which
  * holds the answer by the Gram tests: its projection by the exhaustive
  * triangle routine (the face's own degeneracy-proof case analysis, vertices
@@ -639,7 +667,7 @@ static unsigned gjk_tetrahedron(const agjk_vec3 *w, int exhaustive, double lambd
          * with Nesterov, about one query in two ended so, every time
          * inside by the exhaustive projection after every face and edge
          * had failed. */
-        if (thin) return decline(w, 4, exhaustive, lambda, point);
+        if (thin) return thin_inside(w, exhaustive, lambda, point);
     }
     if (!mask && !taken)
         mask = tetra_face(w, e, gd, gx, r, back == 0 ? 1 : 0, &taken, &ignored, lambda, point,
@@ -657,7 +685,7 @@ static unsigned gjk_tetrahedron(const agjk_vec3 *w, int exhaustive, double lambd
          * (unless the inside test has answered already). */
         int thin = 0;
         if (!mask && !inward) mask = tetra_inside(w, e, gd, lambda, point, notes, &thin);
-        if (thin) return decline(w, 4, exhaustive, lambda, point);
+        if (thin) return thin_inside(w, exhaustive, lambda, point);
     }
     if (!mask && taken) mask = thin_face(w, taken, lambda, point);
     return mask ? mask : decline(w, 4, exhaustive, lambda, point);
@@ -673,7 +701,7 @@ unsigned agjk__simplex_project_gjk_fast(const agjk_vec3 *w, int n, double lambda
     }
 }
 
-unsigned agjk__simplex_project_gjk_noted(const agjk_vec3 *w, int n, double lambda[4],
+AGJK__HOT_ENTRY unsigned agjk__simplex_project_gjk_noted(const agjk_vec3 *w, int n, double lambda[4],
                                          agjk_vec3 *point, agjk__projection_notes *notes) {
     /* Largest first: a tetrahedron is the usual case on curved shapes. */
     if (n >= 4) return gjk_tetrahedron(w, 1, lambda, point, notes);
