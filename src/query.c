@@ -167,7 +167,7 @@ static AGJK__ALWAYS_INLINE agjk_status run_query(const agjk_shape *a, const agjk
     return result->status = status;
 }
 
-agjk_status agjk__query_run(const agjk_shape *a, const agjk_pose *pose_a, const agjk_shape *b,
+AGJK__HOT_ENTRY agjk_status agjk__query_run(const agjk_shape *a, const agjk_pose *pose_a, const agjk_shape *b,
                             const agjk_pose *pose_b, const agjk_options *options,
                             agjk_result *result, int boolean_mode, struct agjk_cache *cache,
                             const agjk__warm_hooks *hooks) {
@@ -177,13 +177,13 @@ agjk_status agjk__query_run(const agjk_shape *a, const agjk_pose *pose_a, const 
     return run_query(a, pose_a, b, pose_b, options, result, 0, cache, hooks);
 }
 
-agjk_status agjk_distance(const agjk_shape *a, const agjk_pose *pose_a, const agjk_shape *b,
+AGJK__HOT_ENTRY agjk_status agjk_distance(const agjk_shape *a, const agjk_pose *pose_a, const agjk_shape *b,
                           const agjk_pose *pose_b, const agjk_options *options,
                           agjk_result *result) {
     return run_query(a, pose_a, b, pose_b, options, result, 0, NULL, NULL);
 }
 
-agjk_status agjk_collide(const agjk_shape *a, const agjk_pose *pose_a, const agjk_shape *b,
+AGJK__HOT_ENTRY agjk_status agjk_collide(const agjk_shape *a, const agjk_pose *pose_a, const agjk_shape *b,
                          const agjk_pose *pose_b, const agjk_options *options,
                          agjk_result *result) {
     return run_query(a, pose_a, b, pose_b, options, result, 1, NULL, NULL);

@@ -1117,11 +1117,11 @@ static AGJK__ALWAYS_INLINE void solve(agjk__minkowski *md, const agjk__solve_inp
  * and EPA keep the one that takes its own, and only Boolean queries, which
  * take it before the solver to end distant pairs early, pay for the
  * other. */
-void agjk__solve(agjk__minkowski *md, const agjk__solve_input *in, agjk__solve_output *out) {
+AGJK__HOT_ENTRY void agjk__solve(agjk__minkowski *md, const agjk__solve_input *in, agjk__solve_output *out) {
     solve(md, in, NULL, out);
 }
 
-void agjk__solve_from(agjk__minkowski *md, const agjk__solve_input *in, const agjk__start *start,
+AGJK__HOT_ENTRY void agjk__solve_from(agjk__minkowski *md, const agjk__solve_input *in, const agjk__start *start,
                       agjk__solve_output *out) {
     if (!start) {
         agjk__solve(md, in, out);
