@@ -199,6 +199,11 @@ __attribute__((weak)) void agjk__segment_support(const void *, const agjk_vec3 *
                                                  int *);
 __attribute__((weak)) void agjk__ellipsoid_support(const void *, const agjk_vec3 *, agjk_vec3 *,
                                                    int *);
+__attribute__((weak)) void agjk__polytope_support(const void *, const agjk_vec3 *, agjk_vec3 *,
+                                                  int *);
+__attribute__((weak)) void agjk__polytope_pair_support(const void *, const agjk_vec3 *,
+                                                       agjk_vec3 *, int *, const void *,
+                                                       const agjk_vec3 *, agjk_vec3 *, int *);
 #else
 #define AGJK__DIRECT_SUPPORT 0
 #endif
@@ -303,7 +308,24 @@ static AGJK__ALWAYS_INLINE void agjk__minkowski_support(agjk__minkowski *md, agj
     agjk_vec3 db = !db_given ? m3_tmul(&md->rotation[0][0], d)
                    : direct == AGJK__SUPPORT_DIRECT_FIRST ? *db_given
                                                          : v3_load_scalars(db_given);
-    agjk_vec3 pa = agjk__shape_support(md, md->support_a, md->data_a, na, &md->hint_a, direct);
+    agjk_vec3 pa, pb, pair_b = v3(0.0, 0.0, 0.0);
+    int paired = 0;
+#if AGJK__DIRECT_SUPPORT
+    /* Two polytopes: both supports in one call, two climbs taken in turns
+     * (agjk__polytope_pair_support; through copies, as below). Hulls of
+     * 141 points: one-support Boolean queries 133 -> 114 ns, close pairs
+     * 600 -> 540, overlapping 612 -> 523. */
+    if (direct && md->support_a == agjk__polytope_support &&
+        md->support_b == agjk__polytope_support) {
+        agjk_vec3 da = na, dbc = db, qa, qb;
+        agjk__polytope_pair_support(md->data_a, &da, &qa, &md->hint_a, md->data_b, &dbc, &qb,
+                                    &md->hint_b);
+        pa = qa;
+        pair_b = qb;
+        paired = 1;
+    } else
+#endif
+        pa = agjk__shape_support(md, md->support_a, md->data_a, na, &md->hint_a, direct);
 #if AGJK__DIRECT_SUPPORT
     /* B an ellipsoid, in the solver's loop: its point in A's frame,
      * R D^2 d_B / ||D d_B|| + t, is formed as (R q) inv + t with q = D^2 d_B
@@ -328,18 +350,20 @@ static AGJK__ALWAYS_INLINE void agjk__minkowski_support(agjk__minkowski *md, agj
         }
     }
 #endif
-    agjk_vec3 pb, q_first = v3(0.0, 0.0, 0.0);
+    agjk_vec3 q_first = v3(0.0, 0.0, 0.0);
     double inv_first = 0.0;
     int fused = 0;
+    /* B's ellipsoid point in A's frame for a cold query's first support too
+     * (B's direction given, from the world offset: agjk__solve_input.x0_b),
+     * whose points are not bounded yet: pb is formed for the tests below,
+     * which decide as they always did, and b, on the chain to a Boolean
+     * query's plane test, is not formed from it. One-support Boolean queries
+     * on ellipsoids: 70 -> 62 ns, with the direction's unit factor and B's
+     * turn taken from the world offset. */
 #if AGJK__DIRECT_SUPPORT
-    /* The same for a cold query's first support (B's direction given, from
-     * the world offset: agjk__solve_input.x0_b), whose points are not
-     * bounded yet: pb is formed for the tests below, which decide as they
-     * always did, and b, on the chain to a Boolean query's plane test, is
-     * not formed from it. One-support Boolean queries on ellipsoids: 70 ->
-     * 62 ns, with the direction's unit factor and B's turn taken from the
-     * world offset. */
-    if (direct == AGJK__SUPPORT_DIRECT_FIRST && db_given &&
+    if (paired) {
+        pb = pair_b;
+    } else if (direct == AGJK__SUPPORT_DIRECT_FIRST && db_given &&
         md->support_b == agjk__ellipsoid_support &&
         agjk__ellipsoid_unnormalized((const agjk_ellipsoid *)md->data_b, db, &q_first,
                                      &inv_first)) {

@@ -73,5 +73,11 @@ void agjk__segment_support(const void *data, const agjk_vec3 *direction, agjk_ve
                            int *hint);
 void agjk__ellipsoid_support(const void *data, const agjk_vec3 *direction, agjk_vec3 *out,
                              int *hint);
+void agjk__polytope_support(const void *data, const agjk_vec3 *direction, agjk_vec3 *out,
+                            int *hint);
+/* Both supports of two polytopes at once (shape_polytope.c). */
+void agjk__polytope_pair_support(const void *data_a, const agjk_vec3 *direction_a,
+                                 agjk_vec3 *out_a, int *hint_a, const void *data_b,
+                                 const agjk_vec3 *direction_b, agjk_vec3 *out_b, int *hint_b);
 
 #endif

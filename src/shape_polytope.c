@@ -36,37 +36,101 @@ static void polytope_scan(const agjk_polytope *p, agjk_vec3 d, agjk_vec3 *out, i
  * predicts and runs ahead of, where a running maximum over the list (steepest
  * ascent, compiled to conditional moves) chains every comparison of a step and
  * the next step's loads behind them: measured on 141-point hulls, about twice
- * the time for the same instruction count. */
-static void polytope_climb(const agjk_polytope *p, agjk_vec3 d, agjk_vec3 *out, int *hint) {
-    const agjk_vec3 *v = p->vertices;
-    const int32_t *offsets = p->neighbor_offsets, *neighbors = p->neighbors;
-    int current = clamp_hint(*hint, p->vertex_count);
-    double current_dot = v3_dot(d, v[current]);
-    /* Each move strictly increases <d, v>: at most vertex_count - 1 moves. */
-    for (int moves = 0; moves < p->vertex_count; ++moves) {
-        int e = offsets[current], end = offsets[current + 1];
-        for (; e < end; ++e) {
-            int u = neighbors[e];
-            double dot = v3_dot(d, v[u]);
-            if (dot > current_dot) {
-                current_dot = dot;
-                current = u;
-                break;
-            }
-        }
-        if (e == end) break; /* no better neighbour: a global maximiser */
-    }
-    *hint = current;
-    *out = v[current];
+ * the time for the same instruction count. The climb is a state (the
+ * current vertex and its <d, v>, the neighbour list being read, the moves
+ * made) advanced one neighbour test at a time, so that two climbs can be
+ * taken in turns (agjk__polytope_pair_support). */
+typedef struct climb {
+    const agjk_vec3 *v;
+    const int32_t *offsets, *neighbors;
+    agjk_vec3 d;
+    double current_dot;
+    int current, e, end, moves, limit;
+} climb;
+
+static inline void climb_begin(climb *c, const agjk_polytope *p, agjk_vec3 d, int hint) {
+    c->v = p->vertices;
+    c->offsets = p->neighbor_offsets;
+    c->neighbors = p->neighbors;
+    c->d = d;
+    c->current = clamp_hint(hint, p->vertex_count);
+    c->current_dot = v3_dot(d, c->v[c->current]);
+    c->e = c->offsets[c->current];
+    c->end = c->offsets[c->current + 1];
+    c->moves = 0;
+    c->limit = p->vertex_count;
 }
 
-static void polytope_support(const void *data, const agjk_vec3 *direction, agjk_vec3 *out,
-                             int *hint) {
+/* The next neighbour test: 0 once the climb has ended (no better
+ * neighbour: a global maximiser; or vertex_count moves made, which only a
+ * graph that is not the hull's edge graph can take). */
+static inline int climb_step(climb *c) {
+    if (c->e == c->end) return 0;
+    int u = c->neighbors[c->e];
+    double dot = v3_dot(c->d, c->v[u]);
+    if (dot > c->current_dot) {
+        c->current_dot = dot;
+        c->current = u;
+        if (++c->moves == c->limit) return 0;
+        c->e = c->offsets[u];
+        c->end = c->offsets[u + 1];
+    } else {
+        ++c->e;
+    }
+    return 1;
+}
+
+static void polytope_climb(const agjk_polytope *p, agjk_vec3 d, agjk_vec3 *out, int *hint) {
+    climb c;
+    climb_begin(&c, p, d, *hint);
+    while (climb_step(&c)) {
+    }
+    *hint = c.current;
+    *out = c.v[c.current];
+}
+
+static int climbs(const agjk_polytope *p) {
+    return p->neighbor_offsets && p->vertex_count >= HILL_CLIMB_MIN_VERTICES;
+}
+
+void agjk__polytope_support(const void *data, const agjk_vec3 *direction, agjk_vec3 *out,
+                            int *hint) {
     const agjk_polytope *p = (const agjk_polytope *)data;
-    if (p->neighbor_offsets && p->vertex_count >= HILL_CLIMB_MIN_VERTICES)
+    if (climbs(p))
         polytope_climb(p, *direction, out, hint);
     else
         polytope_scan(p, *direction, out, hint);
+}
+
+/* Both supports of a pair of climbing polytopes, the two climbs taken in
+ * turns, one neighbour each: the same vertices as one climb after the
+ * other. A climb is a chain of loads and comparisons whose every move
+ * is a branch the processor mispredicts, and what follows a mispredicted
+ * branch is thrown away: one after the other, the second climb cannot
+ * advance while the first moves; in turns it does. */
+void agjk__polytope_pair_support(const void *data_a, const agjk_vec3 *direction_a,
+                                 agjk_vec3 *out_a, int *hint_a, const void *data_b,
+                                 const agjk_vec3 *direction_b, agjk_vec3 *out_b, int *hint_b) {
+    const agjk_polytope *pa = (const agjk_polytope *)data_a, *pb = (const agjk_polytope *)data_b;
+    if (!climbs(pa) || !climbs(pb)) {
+        agjk__polytope_support(pa, direction_a, out_a, hint_a);
+        agjk__polytope_support(pb, direction_b, out_b, hint_b);
+        return;
+    }
+    climb a, b;
+    climb_begin(&a, pa, *direction_a, *hint_a);
+    climb_begin(&b, pb, *direction_b, *hint_b);
+    int run_a = 1, run_b = 1;
+    while (run_a & run_b) {
+        run_a = climb_step(&a);
+        run_b = climb_step(&b);
+    }
+    while (run_a) run_a = climb_step(&a);
+    while (run_b) run_b = climb_step(&b);
+    *hint_a = a.current;
+    *out_a = a.v[a.current];
+    *hint_b = b.current;
+    *out_b = b.v[b.current];
 }
 
 static int adjacency_is_valid(const agjk_polytope *p) {
@@ -88,5 +152,5 @@ agjk_status agjk_shape_polytope(agjk_shape *shape, const agjk_polytope *polytope
     for (int i = 0; i < polytope->vertex_count; ++i)
         if (!v3_in_range(polytope->vertices[i])) return AGJK_STATUS_INVALID_INPUT;
     if (!adjacency_is_valid(polytope)) return AGJK_STATUS_INVALID_INPUT;
-    return shape_fill(shape, polytope_support, polytope, 0.0);
+    return shape_fill(shape, agjk__polytope_support, polytope, 0.0);
 }

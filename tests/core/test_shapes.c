@@ -17,6 +17,7 @@
 #include "check_main.h"
 #include "reference.h"
 #include "testutil.h"
+#include "../../src/shape_points.h"
 
 #define N_SAMPLES 4000
 #define N_DIRS 600
@@ -505,6 +506,90 @@ START_TEST(direct_support_matches_callback) {
 }
 END_TEST
 
+/* A random polytope on an ellipsoid, with its hull's adjacency when
+ * `adjacency` (else scanned); n points. */
+static void pair_polytope(tu_rng *rng, agjk_polytope *poly, agjk_vec3 *verts, int32_t *tris,
+                          int n, int adjacency) {
+    ref_shape s;
+    tu_random_polytope(rng, &s, verts, n, tu_paper_scale(rng));
+    memset(poly, 0, sizeof *poly);
+    poly->vertices = verts;
+    poly->vertex_count = n;
+    if (adjacency) {
+        int nt = brute_hull(verts, n, tris, 2 * 80);
+        TU_ENSURE(nt == 2 * n - 4, "hull of %d points on an ellipsoid: %d triangles", n, nt);
+        TU_CHECK_INT_EQ(agjk_polytope_build_adjacency(poly, tris, nt), AGJK_STATUS_OK);
+    }
+}
+
+/* The two polytopes' supports taken in turns (agjk__polytope_pair_support,
+ * the Minkowski support's path for a pair of polytopes) are each the
+ * support one climb or scan gives, point and hint, from any hints
+ * (out-of-range ones too) and either way of finding them. And queries on
+ * such pairs answer bit for bit as with A behind a callback, where each
+ * shape is asked on its own. */
+START_TEST(polytope_pair_support_matches_single) {
+    tu_rng rng;
+    tu_rng_seed(&rng, 31);
+    static agjk_vec3 va[80], vb[80];
+    static int32_t ta[3 * 2 * 80], tb[3 * 2 * 80];
+    int pairs = 0, climbed = 0;
+    for (int rep = 0; rep < 40; rep++) {
+        agjk_polytope pa, pb;
+        /* Mostly climbing sizes; every fifth pair has a polytope scanned
+         * for its size, and every fourth one without adjacency. */
+        int na = rep % 5 == 4 ? 8 + (int)tu_uniform_int(&rng, 24) : 32 + (int)tu_uniform_int(&rng, 48);
+        int nb = 32 + (int)tu_uniform_int(&rng, 48);
+        pair_polytope(&rng, &pa, va, ta, na, rep % 4 != 3);
+        pair_polytope(&rng, &pb, vb, tb, nb, rep % 4 != 2);
+        agjk_shape sa, sb;
+        TU_CHECK_INT_EQ(agjk_shape_polytope(&sa, &pa), AGJK_STATUS_OK);
+        TU_CHECK_INT_EQ(agjk_shape_polytope(&sb, &pb), AGJK_STATUS_OK);
+        climbed += pa.neighbor_offsets && pb.neighbor_offsets &&
+                   na >= AGJK_POLYTOPE_HILL_CLIMB_MIN_VERTICES &&
+                   nb >= AGJK_POLYTOPE_HILL_CLIMB_MIN_VERTICES;
+        for (int i = 0; i < 200; i++) {
+            agjk_vec3 da = tu_unit_vector(&rng), db = tu_scale(tu_unit_vector(&rng), 3.0);
+            int ha = i % 17 == 0 ? -3 : (int)tu_uniform_int(&rng, (uint32_t)na + 2);
+            int hb = i % 13 == 0 ? nb + 9 : (int)tu_uniform_int(&rng, (uint32_t)nb);
+            int ha1 = ha, hb1 = hb, ha2 = ha, hb2 = hb;
+            agjk_vec3 oa1, ob1, oa2, ob2;
+            sa.support(sa.data, &da, &oa1, &ha1);
+            sb.support(sb.data, &db, &ob1, &hb1);
+            agjk__polytope_pair_support(&pa, &da, &oa2, &ha2, &pb, &db, &ob2, &hb2);
+            TU_ENSURE(memcmp(&oa1, &oa2, sizeof oa1) == 0 && memcmp(&ob1, &ob2, sizeof ob1) == 0 &&
+                          ha1 == ha2 && hb1 == hb2,
+                      "pair %d (n = %d, %d) direction %d: in turns (%d, %d), alone (%d, %d)", rep,
+                      na, nb, i, ha2, hb2, ha1, hb1);
+        }
+        agjk_shape wrapped = {forwarding_support, &sa, 0.0};
+        for (int q = 0; q < 20; q++) {
+            agjk_pose posa = tu_random_pose(&rng, 1.0), posb = tu_random_pose(&rng, 1.0);
+            agjk_options o = agjk_default_options();
+            o.method = q % 3 == 0 ? AGJK_METHOD_GJK : q % 3 == 1 ? AGJK_METHOD_NESTEROV
+                                                                  : AGJK_METHOD_ADAPTIVE;
+            o.compute = AGJK_COMPUTE_WITNESS;
+            agjk_result r1, r2;
+            if (q % 2) {
+                agjk_collide(&wrapped, &posa, &sb, &posb, &o, &r1);
+                agjk_collide(&sa, &posa, &sb, &posb, &o, &r2);
+            } else {
+                agjk_distance(&wrapped, &posa, &sb, &posb, &o, &r1);
+                agjk_distance(&sa, &posa, &sb, &posb, &o, &r2);
+            }
+            TU_ENSURE(memcmp(&r1, &r2, sizeof r1) == 0,
+                      "pair %d query %d: status %d / %d, distance %.17g / %.17g", rep, q,
+                      (int)r1.status, (int)r2.status, r1.distance, r2.distance);
+            ++pairs;
+        }
+        if (pa.neighbor_offsets) agjk_polytope_free_adjacency(&pa);
+        if (pb.neighbor_offsets) agjk_polytope_free_adjacency(&pb);
+    }
+    TU_ENSURE(climbed >= 15, "only %d pairs where both climb", climbed);
+    TU_ENSURE(pairs == 800, "%d queries", pairs);
+}
+END_TEST
+
 int main(void) {
     Suite *s = suite_create("shapes");
     TU_ADD(s, builtin_shapes);
@@ -514,5 +599,6 @@ int main(void) {
     TU_ADD(s, brute_hull_itself);
     TU_ADD(s, polytope_hill_climbing);
     TU_ADD(s, polytope_hill_climbing_threshold);
+    TU_ADD(s, polytope_pair_support_matches_single);
     return tu_run_suite(s);
 }
