@@ -545,9 +545,11 @@ static unsigned tetra_edge(const agjk_vec3 *w, int i, int j, int k, double gii, 
  * other cases are left to the exhaustive projection. The edges e_i = w_i - a
  * and their squared lengths gd[i] come from the caller, which has them.
  * *thin is set to 1 when the origin is clearly inside by the signed volumes
- * but the tetrahedron is too flat at a: then no face or edge through a
- * passes its KKT test either, and the caller goes to the exhaustive
- * projection at once (which measures from the vertex nearest the origin). */
+ * but the tetrahedron is too flat at a: the caller then takes the
+ * exhaustive projection's answer at once (thin_inside, which measures from
+ * the vertex nearest the origin) rather than trying the faces and edges
+ * through a first, which never held the answer in such a case on the
+ * protocol's runs (the origin clearly inside, their KKT tests fail). */
 static unsigned tetra_inside(const agjk_vec3 *w, const agjk_vec3 *e, const double *gd,
                              double lambda[4], agjk_vec3 *point,
                              agjk__projection_notes *notes, int *thin) {
@@ -664,9 +666,9 @@ static unsigned gjk_tetrahedron(const agjk_vec3 *w, int exhaustive, double lambd
         int thin = 0;
         mask = tetra_inside(w, e, gd, lambda, point, notes, &thin);
         /* Flat momentum steps near enclosure: on overlapping ellipsoids
-         * with Nesterov, about one query in two ended so, every time
-         * inside by the exhaustive projection after every face and edge
-         * had failed. */
+         * with Nesterov, about one query in two ends so (before, every
+         * time inside by the exhaustive projection after every face and
+         * edge had failed). */
         if (thin) return thin_inside(w, exhaustive, lambda, point);
     }
     if (!mask && !taken)
