@@ -336,7 +336,16 @@ static AGJK__COLD int deep_inside(const agjk_vec3 *p, int n, double noise, agjk_
             for (int k = j + 1; k < n; ++k) {
                 agjk_vec3 e1 = v3_sub(p[j], p[i]), e2 = v3_sub(p[k], p[i]);
                 agjk_vec3 c = v3_cross(e1, e2);
-                if (v3_norm2(c) == 0.0) continue;
+                /* A normal computed as zero says nothing about a facet's
+                 * direction unless the three points lie exactly on one
+                 * axis-parallel line (every product of the cross product
+                 * zero): a point a hundred orders of magnitude nearer the
+                 * origin than the others vanishes from both differences,
+                 * and skipping such triples once certified an overlap of a
+                 * point and a needle-shaped ellipsoid 0.12 apart (radii
+                 * 1e-8, 10 and 4e43). Such a normal then fails below, as a
+                 * normal lost in rounding does. */
+                if (v3_norm2(c) == 0.0 && v3_norm2(v3_abs_cross(e1, e2)) == 0.0) continue;
                 double hi = -INFINITY, lo = INFINITY;
                 for (int m = 0; m < n; ++m) {
                     double v = v3_dot(c, p[m]);

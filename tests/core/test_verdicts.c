@@ -314,6 +314,60 @@ START_TEST(needles_get_no_false_overlap) {
 }
 END_TEST
 
+/* A point beside a needle- or ribbon-shaped ellipsoid (radii 1e-9 ... 1e-3
+ * across, 1 ... 10 wide, 1e10 ... 1e44 long), off its thin side by 1e-3
+ * ... 1, both turned: the support points are up to 1e44 long, and the
+ * rounding of the relative transform, far above the gap, leaves the sign
+ * undecidable in double precision. "Contact within tolerance" then, or
+ * "separated" where a plane shows it, but never "intersecting": the
+ * overlap certification once took a normal lost to rounding (a point 1e43
+ * times nearer the origin than the others vanishing from both differences)
+ * for no facet at all (a fuzz input: radii 9.8e-9, 9.9 and 4.5e43, gap
+ * 0.12). */
+START_TEST(point_beside_ellipsoid_needle) {
+    tu_rng rng;
+    tu_rng_seed(&rng, 44);
+    const agjk_method methods[] = {AGJK_METHOD_GJK, AGJK_METHOD_NESTEROV, AGJK_METHOD_ADAPTIVE};
+    int wrong = 0, queries = 0;
+    for (int i = 0; i < 600; i++) {
+        agjk_ellipsoid e = {{tu_log_uniform(&rng, -9, -3), tu_log_uniform(&rng, 0, 1),
+                             tu_log_uniform(&rng, 10, 44)}};
+        double gap = tu_log_uniform(&rng, -3, 0);
+        agjk_shape a, b;
+        TU_CHECK_INT_EQ(agjk_shape_point(&a), AGJK_STATUS_OK);
+        TU_CHECK_INT_EQ(agjk_shape_ellipsoid(&b, &e), AGJK_STATUS_OK);
+        agjk_pose pa = tu_pose_identity(), pb = tu_pose_identity();
+        tu_random_rotation(&rng, pa.rotation);
+        tu_random_rotation(&rng, pb.rotation);
+        pb.translation = tu_vec(tu_uniform_range(&rng, -1, 1), tu_uniform_range(&rng, -1, 1),
+                                tu_uniform_range(&rng, -1, 1));
+        /* The point at (radius + gap, y, 0) in B's frame, |y| within half
+         * the width: outside by at least the gap along B's thin axis. */
+        double y = tu_uniform_range(&rng, -0.5, 0.5) * e.radii.y;
+        agjk_vec3 local = tu_vec(e.radii.x + gap, y, 0.0);
+        for (int r = 0; r < 3; r++)
+            (&pa.translation.x)[r] = (&pb.translation.x)[r] + pb.rotation[r][0] * local.x +
+                                     pb.rotation[r][1] * local.y;
+        for (int m = 0; m < 3; m++) {
+            agjk_options o = agjk_default_options();
+            o.method = methods[m];
+            agjk_result rd, rc;
+            agjk_status sd = agjk_distance(&a, &pa, &b, &pb, &o, &rd);
+            agjk_status sc = agjk_collide(&a, &pa, &b, &pb, &o, &rc);
+            queries += 2;
+            if (sd == AGJK_STATUS_INTERSECTING || sc == AGJK_STATUS_INTERSECTING) {
+                if (wrong < 5)
+                    fprintf(stderr, "radii %g %g %g, gap %g, method %d: distance %s, collide %s\n",
+                            e.radii.x, e.radii.y, e.radii.z, gap, m, agjk_status_string(sd),
+                            agjk_status_string(sc));
+                ++wrong;
+            }
+        }
+    }
+    TU_ENSURE(wrong == 0, "%d false overlaps in %d queries", wrong, queries);
+}
+END_TEST
+
 /* The pose of tools/bench/coherent.c's fast ellipsoid trajectory, pair 6,
  * step 63 (seed 1), bit for bit. The cold adaptive query used to end
  * "contact within tolerance" with [0, 3.3e-7] after 19 support calls while
@@ -371,6 +425,7 @@ int main(void) {
     TU_ADD(s, polytopes_at_the_floor);
     TU_ADD(s, stop_reasons);
     TU_ADD(s, needles_get_no_false_overlap);
+    TU_ADD(s, point_beside_ellipsoid_needle);
     TU_ADD(s, shallow_overlap_decided_cold);
     return tu_run_suite(s);
 }
