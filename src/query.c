@@ -39,11 +39,18 @@ static AGJK__ALWAYS_INLINE agjk_vec3 plane_normal(const agjk_pose *pose_a, agjk_
  * needs nothing the support computes: distant Boolean queries 1.5-2 ns
  * faster (of 33-44). Offsets near underflow, whose rotation may have lost
  * digits, take the rotation. */
+static AGJK__ALWAYS_INLINE int start_normal_from_offset(const agjk__minkowski *md,
+                                                        const agjk__solve_input *in) {
+    return !in->x0_given && md->translation_size >= 0x1p-900;
+}
+static AGJK__ALWAYS_INLINE agjk_vec3 offset_normal(const agjk_pose *pose_a,
+                                                   const agjk_pose *pose_b) {
+    return v3_normalize(v3_sub(pose_b->translation, pose_a->translation));
+}
 static AGJK__ALWAYS_INLINE agjk_vec3 start_normal(const agjk_pose *pose_a, const agjk_pose *pose_b,
                                                   const agjk__minkowski *md,
                                                   const agjk__solve_input *in, agjk_vec3 x) {
-    if (!in->x0_given && md->translation_size >= 0x1p-900)
-        return v3_normalize(v3_sub(pose_b->translation, pose_a->translation));
+    if (start_normal_from_offset(md, in)) return offset_normal(pose_a, pose_b);
     return plane_normal(pose_a, x);
 }
 
@@ -78,13 +85,23 @@ static AGJK__ALWAYS_INLINE agjk_status run_query(const agjk_shape *a, const agjk
     agjk__solve_output out;
     int on_start_plane = 0; /* the solver ended on iteration 0's plane */
     if (boolean_mode) {
+        /* The normal of a separating start from the offset, taken before the
+         * support rather than after its plane test: its square root and
+         * division then run alongside the support instead of at the end of
+         * the query (one-support Boolean queries: boxes 59 -> 56 ns, hulls
+         * 115 -> 108; ellipsoids, whose support's own square root and
+         * division are the longer chain, do not move). Wasted when the start
+         * does not separate: a few cycles of a query that goes on for
+         * hundreds. */
+        int early = !cache && start_normal_from_offset(&md, &in);
+        agjk_vec3 normal = early ? offset_normal(pose_a, pose_b) : v3(0.0, 0.0, 0.0);
         agjk__start start;
         if (agjk__solve_start(&md, &in, &start) && !cache) {
             result->iterations = 1;
             result->support_calls = 1;
             result->hint_a = md.hint_a;
             result->hint_b = md.hint_b;
-            result->normal = start_normal(pose_a, pose_b, &md, &in, start.x);
+            result->normal = early ? normal : start_normal(pose_a, pose_b, &md, &in, start.x);
             return result->status = AGJK_STATUS_SEPARATED;
         }
         /* (A cached query: the solver ends at once on a separating start.) */
