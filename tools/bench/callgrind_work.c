@@ -218,6 +218,12 @@ static void time_report(time_stats *st, const char *name) {
         sa += st->agjk_ns[i];
         sc += st->coal_ns[i];
     }
+    /* Per problem, in the order of the queries `agjk` mode prints (their
+     * support calls tell fixed from per-iteration cost). */
+    if (getenv("AGJK_WORK_PER_PROBLEM"))
+        for (int i = 0; i < st->count; ++i)
+            fprintf(stderr, "problem %d agjk_ns %.2f other_ns %.2f\n", i, st->agjk_ns[i],
+                    st->coal_ns[i]);
     qsort(ratio, (size_t)st->count, sizeof ratio[0], cmp_double);
     const char *other = versus_mpr() ? "mpr" : "coal";
     printf("%s: %d problems, mean ns agjk %.1f %s %.1f, median ratio agjk/%s %.3f\n", name,
@@ -237,7 +243,8 @@ int main(int argc, char **argv) {
                         "       agjk-callgrind-work time WORKLOAD [PROBLEMS [REPS]]\n"
                         "environment: AGJK_WORK_METHOD=nesterov|normalized|polyak|adaptive, "
                         "AGJK_WORK_WITNESS=1, AGJK_WORK_VS=mpr (time: libccd's MPR "
-                        "instead of Coal)\n"
+                        "instead of Coal), AGJK_WORK_PER_PROBLEM=1 (time: each "
+                        "problem's times on stderr)\n"
                         "WORKLOAD: ellipsoids-close boxes-close hulls-close ellipsoids-overlapping "
                         "ellipsoids-distant boxes-distant hulls-distant boxes-overlapping "
                         "boxes-overlapping-boolean boxes-close-boolean "
