@@ -768,8 +768,10 @@ static AGJK__ALWAYS_INLINE void first_support(solver *sv, agjk__vertex *s,
 static void finish(const solver *sv, agjk__solve_output *out) {
     const agjk__solve_input *in = sv->in;
     out->x = sv->x;
-    /* (An overlap has no upper bound to certify: no member point needed.) */
-    int member = sv->count > 0 && out->outcome != AGJK__INTERSECTING;
+    /* (An overlap has no upper bound to certify, and a separating plane
+     * answers with its normal alone: no member point needed.) */
+    int member = sv->count > 0 && out->outcome != AGJK__INTERSECTING &&
+                 out->outcome != AGJK__SEPARATED_EARLY;
     int b_from_a = in->want_witness && sv->b_from_a;
     /* sum lambda_i w_i, for the member point and B's witness point alike */
     agjk_vec3 p = member || b_from_a ? active_combination(sv) : v3(0.0, 0.0, 0.0);
