@@ -285,10 +285,13 @@ static inline void agjk__minkowski_bound_points(agjk__minkowski *md) {
  * db_given R^T d, B's direction, when the caller has it (the projection
  * turns a face's foot into B's frame alongside it: agjk__projection_notes),
  * else NULL; direct is one of AGJK__SUPPORT_* (a constant at each call
- * site). */
+ * site); root_a and root_b, for AGJK__SUPPORT_DIRECT_FIRST with two
+ * ellipsoids and B's direction given, ||D_A d|| and ||D_B d_B|| when the
+ * caller has them (agjk__ellipsoids_apart), else 0. */
 static AGJK__ALWAYS_INLINE void agjk__minkowski_support(agjk__minkowski *md, agjk_vec3 d,
                                                          double d2, agjk__vertex *out,
-                                                         int direct, const agjk_vec3 *db_given) {
+                                                         int direct, const agjk_vec3 *db_given,
+                                                         double root_a, double root_b) {
     /* The direction's range, from d2 when it settles it: the computed
      * squared norm is within 3 eps of |d|^2 (far from underflow), so
      * d2 >= 4 dmin^2 gives max |d_i| >= |d| / sqrt(3) > dmin, and
@@ -323,6 +326,11 @@ static AGJK__ALWAYS_INLINE void agjk__minkowski_support(agjk__minkowski *md, agj
         pa = qa;
         pair_b = qb;
         paired = 1;
+    } else if (direct == AGJK__SUPPORT_DIRECT_FIRST && root_a > 0.0) {
+        agjk_vec3 qa;
+        double inv_a;
+        agjk__ellipsoid_from_root((const agjk_ellipsoid *)md->data_a, na, root_a, &qa, &inv_a);
+        pa = v3_scale(qa, inv_a);
     } else
 #endif
         pa = agjk__shape_support(md, md->support_a, md->data_a, na, &md->hint_a, direct);
@@ -363,6 +371,11 @@ static AGJK__ALWAYS_INLINE void agjk__minkowski_support(agjk__minkowski *md, agj
 #if AGJK__DIRECT_SUPPORT
     if (paired) {
         pb = pair_b;
+    } else if (direct == AGJK__SUPPORT_DIRECT_FIRST && root_b > 0.0) {
+        agjk__ellipsoid_from_root((const agjk_ellipsoid *)md->data_b, db, root_b, &q_first,
+                                  &inv_first);
+        pb = v3_scale(q_first, inv_first);
+        fused = 1;
     } else if (direct == AGJK__SUPPORT_DIRECT_FIRST && db_given &&
         md->support_b == agjk__ellipsoid_support &&
         agjk__ellipsoid_unnormalized((const agjk_ellipsoid *)md->data_b, db, &q_first,

@@ -14,6 +14,12 @@ static int shape_is_valid(const agjk_shape *shape) {
  * quaternion-built matrix, far too little to hide a scale or shear. */
 #define ROTATION_TOLERANCE 1e-6
 
+/* Rotations orthonormal to rounding (a double-precision quaternion's matrix
+ * is within a few ulps): their transposes are their inverses to a few tens
+ * of ulps, so that B's direction may be turned from the world offset by
+ * R_B^T alone rather than by R^T after R_A^T (agjk__solve_input.x0_b). */
+#define RIGID_TOLERANCE (16.0 * DBL_EPSILON)
+
 /* A pose's deviations from a rotation: rows x and y of R orthonormal, and
  * z = x cross y (which makes z orthonormal to both and det R = +1, where a
  * reflection, det -1, would turn the shapes inside out). Cheaper than the six
@@ -79,6 +85,11 @@ static double squared_deviations(const agjk_pose *pose_a, const agjk_pose *pose_
 }
 #endif
 
+/* poses_are_valid's answers besides 0: valid, and valid with both
+ * rotations within RIGID_TOLERANCE of orthonormal. */
+#define POSES_VALID 1
+#define POSES_RIGID 2
+
 /* Both poses, non-null. The usual pair passes at once: the twelve
  * deviations' squares summing to at most the tolerance squared bound each
  * of them, and the translations' 1-norms summing to at most the range bound
@@ -91,8 +102,8 @@ static AGJK__NOINLINE int poses_are_valid(const agjk_pose *pose_a, const agjk_po
     double sum = squared_deviations(pose_a, pose_b);
     double reach = v3_norm1(pose_a->translation) + v3_norm1(pose_b->translation);
     if ((sum <= ROTATION_TOLERANCE * ROTATION_TOLERANCE) & (reach <= AGJK_MAX_COORDINATE))
-        return 1;
-    return pose_is_valid(pose_a) && pose_is_valid(pose_b);
+        return sum <= RIGID_TOLERANCE * RIGID_TOLERANCE ? POSES_RIGID : POSES_VALID;
+    return pose_is_valid(pose_a) && pose_is_valid(pose_b) ? POSES_VALID : 0;
 }
 
 /* x0 = R_A^T (t_A - t_B) has the world offset's 2-norm, to the rounding
@@ -226,9 +237,9 @@ static agjk_vec3 initial_guess(const agjk__solve_input *in, const agjk_pose *pos
 int agjk__query_prepare(const agjk_shape *a, const agjk_pose *pose_a, const agjk_shape *b,
                         const agjk_pose *pose_b, const agjk_options *options, int boolean_mode,
                         agjk__minkowski *md, agjk__solve_input *in) {
-    int hint_a, hint_b;
+    int hint_a, hint_b, poses = 0;
     if (!read_options(options, in, &hint_a, &hint_b) || !shape_is_valid(a) ||
-        !shape_is_valid(b) || !pose_a || !pose_b || !poses_are_valid(pose_a, pose_b))
+        !shape_is_valid(b) || !pose_a || !pose_b || !(poses = poses_are_valid(pose_a, pose_b)))
         return 0;
     agjk_vec3 offset;
     double unit;
@@ -241,7 +252,9 @@ int agjk__query_prepare(const agjk_shape *a, const agjk_pose *pose_a, const agjk
      * distance query's takes the general path, and its answers stay what
      * they were bit for bit (warm starts move by their last bits). */
     in->x0_unit = boolean_mode && !in->x0_given ? unit : 0.0;
-    in->x0_b_given = in->x0_unit > 0.0 && agjk__is_ellipsoid(md->support_b);
+    /* (Rigid poses only: R_B^T stands for R^T R_A^T there, to rounding.) */
+    in->x0_b_given =
+        in->x0_unit > 0.0 && poses == POSES_RIGID && agjk__is_ellipsoid(md->support_b);
     if (in->x0_b_given) {
         agjk_vec3 x0_b = m3_tmul(&pose_b->rotation[0][0], v3_neg(offset));
         double stored[3] = {x0_b.x, x0_b.y, x0_b.z}; /* (see md->translation's) */

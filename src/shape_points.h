@@ -57,6 +57,15 @@ static inline int agjk__ellipsoid_unnormalized(const agjk_ellipsoid *e, agjk_vec
     return 1;
 }
 
+/* The same with ||D d|| already known (root > 0, computed as here: the
+ * square root of the same sum of squares): the same bits. */
+static inline void agjk__ellipsoid_from_root(const agjk_ellipsoid *e, agjk_vec3 d, double root,
+                                             agjk_vec3 *q, double *inv) {
+    agjk_vec3 r = e->radii;
+    *inv = 1.0 / root;
+    *q = v3(r.x * (r.x * d.x), r.y * (r.y * d.y), r.z * (r.z * d.z));
+}
+
 /* The support point itself, q / ||D d||. */
 static inline int agjk__ellipsoid_point(const agjk_ellipsoid *e, agjk_vec3 d, agjk_vec3 *out) {
     agjk_vec3 q;

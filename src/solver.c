@@ -89,7 +89,7 @@ static AGJK__NOINLINE AGJK__COLD void follow_rescale(solver *sv, agjk_vec3 *d) {
  * support path is expanded once. */
 static AGJK__ALWAYS_INLINE void support(solver *sv, agjk_vec3 *d, double d2, agjk__vertex *s,
                                         int direct, const agjk_vec3 *db) {
-    agjk__minkowski_support(sv->md, *d, d2, s, direct, db);
+    agjk__minkowski_support(sv->md, *d, d2, s, direct, db, 0.0, 0.0);
     if (sv->md->rescaled != 1.0) follow_rescale(sv, d);
 }
 static AGJK__NOINLINE void support_rare(solver *sv, agjk_vec3 *d, agjk__vertex *s) {
@@ -756,7 +756,7 @@ static AGJK__ALWAYS_INLINE void first_support(solver *sv, agjk__vertex *s,
         *s = start->s;
         sv->x = start->x;
     } else {
-        agjk__first_support(sv->md, sv->in, s, &sv->x);
+        agjk__first_support(sv->md, sv->in, s, &sv->x, 0);
     }
     sv->x2 = v3_norm2(sv->x);
     sv->abs_tolerance = sv->in->tolerance * sv->md->scale * sv->md->scale;

@@ -36,6 +36,7 @@ gjk-projection-vertex-early|src/simplex.c|s/if (r0 >= 0.0 \&\& r1 >= 0.0 \&\& r2
 gjk-projection-thin-face|src/simplex.c|s/#define WELL_CONDITIONED 1e-2/#define WELL_CONDITIONED 0.0/
 gjk-projection-foot-from-newest|src/simplex.c|s/v3_dot(nrm, w\[iq\])/v3_dot(nrm, a)/
 gjk-projection-edge-weight-by-difference|src/simplex.c|s/double s = v3_dot(b, u) \/ uu;/double s = 1.0 - (1.0 - v3_dot(b, u) \/ uu);/
+ellipsoids-apart-without-allowance|src/solver.h|s/double r = md->margin + 128.0 \* DBL_EPSILON \* size;/double r = md->margin;/
 '
 TESTS="simplex shapes api analytic methods properties collide"
 escaped=0

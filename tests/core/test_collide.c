@@ -15,6 +15,7 @@
  *     reported, not failed.
  * (Coal answers "separated" on ~1/3 of ellipsoid pairs overlapping by 1e-4
  * at the paper's settings; agjk must never.) */
+#include <float.h>
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
@@ -189,10 +190,74 @@ START_TEST(relative_tolerance) {
 }
 END_TEST
 
+/* A Boolean query answered on its first support (iteration 1, one support
+ * call) claims that the plane normal to the frames' offset separates the
+ * shapes: A's extent along it ends before B's begins. Ellipsoid pairs with
+ * random radii (1:100), rotations and positions (up to 1e3 from the
+ * origin) are placed with those extents apart by -64 ... 64 ulps of their
+ * size, where the rounding of the support values, of B's turned direction
+ * and of the offset decides: the plane such an answer returns must
+ * separate the shapes (their extents along it, in long double); and
+ * it must come where they are clearly apart (1e-6 of the size), so that the
+ * support values' test (agjk__ellipsoids_apart) is what is tested. */
+START_TEST(first_plane_along_offset) {
+    tu_rng rng;
+    tu_rng_seed(&rng, 64);
+    int false_planes = 0, clear = 0, clear_answered = 0, near = 0, near_answered = 0;
+    for (int i = 0; i < 4000; i++) {
+        ref_shape a, b;
+        tu_shape_init(&a, REF_ELLIPSOID, tu_log_uniform(&rng, -1, 1), tu_log_uniform(&rng, -1, 1),
+                      tu_log_uniform(&rng, -1, 1));
+        tu_shape_init(&b, REF_ELLIPSOID, tu_log_uniform(&rng, -1, 1), tu_log_uniform(&rng, -1, 1),
+                      tu_log_uniform(&rng, -1, 1));
+        agjk_pose pa = tu_random_pose(&rng, i % 2 ? 1e3 : 1.0), pb = pa;
+        tu_random_rotation(&rng, pb.rotation);
+        agjk_vec3 u = tu_unit_vector(&rng);
+        long double ha = posed_support(&a, &pa, u) - tu_dot(u, pa.translation);
+        pb.translation = tu_vec(0.0, 0.0, 0.0);
+        long double hb = posed_support(&b, &pb, tu_scale(u, -1.0));
+        double size = (double)(ha + hb) + tu_norm(pa.translation);
+        int k = (int)tu_uniform_int(&rng, 129) - 64;
+        double apart = i % 8 == 0 ? 1e-6 * size : k * DBL_EPSILON * size;
+        pb.translation = tu_add(pa.translation, tu_scale(u, (double)(ha + hb) + apart));
+        agjk_shape sa, sb;
+        TU_CHECK_INT_EQ(ref_make_agjk(&a, &sa), AGJK_STATUS_OK);
+        TU_CHECK_INT_EQ(ref_make_agjk(&b, &sb), AGJK_STATUS_OK);
+        for (int m = 0; m < CORE_METHOD_COUNT; m++) {
+            agjk_options o = agjk_default_options();
+            o.method = core_methods[m];
+            agjk_result r;
+            agjk_status st = agjk_collide(&sa, &pa, &sb, &pb, &o, &r);
+            int first = st == AGJK_STATUS_SEPARATED && r.support_calls == 1;
+            /* The plane it claims, in long double: A's extent along the
+             * normal ends before B's begins. */
+            if (first && -posed_support(&b, &pb, tu_scale(r.normal, -1.0)) -
+                                 posed_support(&a, &pa, r.normal) <=
+                             0.0L)
+                ++false_planes;
+            if (i % 8 == 0) {
+                ++clear;
+                clear_answered += first;
+            } else if (k > 32) {
+                ++near;
+                near_answered += first;
+            }
+        }
+    }
+    printf("first_plane_along_offset: %d one-support separations with the extents touching "
+           "or overlapping; clearly apart answered on the first support %d of %d; "
+           "32-64 ulps apart %d of %d\n",
+           false_planes, clear_answered, clear, near_answered, near);
+    TU_CHECK_INT_EQ(false_planes, 0);
+    TU_CHECK_INT_EQ(clear_answered, clear);
+}
+END_TEST
+
 int main(void) {
     Suite *s = suite_create("collide");
     TU_ADD(s, paper_tolerance);
     TU_ADD(s, tight_tolerance);
     TU_ADD(s, relative_tolerance);
+    TU_ADD(s, first_plane_along_offset);
     return tu_run_suite(s);
 }
