@@ -251,6 +251,15 @@ static inline int agjk__constant_norms(agjk_support_fn fn) {
 #endif
 }
 
+static inline int agjk__is_box(agjk_support_fn fn) {
+#if AGJK__DIRECT_SUPPORT
+    return fn == agjk__box_support;
+#else
+    (void)fn;
+    return 0;
+#endif
+}
+
 static inline int agjk__is_ellipsoid(agjk_support_fn fn) {
 #if AGJK__DIRECT_SUPPORT
     return fn == agjk__ellipsoid_support;
@@ -287,7 +296,7 @@ static inline void agjk__minkowski_bound_points(agjk__minkowski *md) {
  * else NULL; direct is one of AGJK__SUPPORT_* (a constant at each call
  * site); root_a and root_b, for AGJK__SUPPORT_DIRECT_FIRST with two
  * ellipsoids and B's direction given, ||D_A d|| and ||D_B d_B|| when the
- * caller has them (agjk__ellipsoids_apart), else 0. */
+ * caller has them (agjk__start_apart), else 0. */
 static AGJK__ALWAYS_INLINE void agjk__minkowski_support(agjk__minkowski *md, agjk_vec3 d,
                                                          double d2, agjk__vertex *out,
                                                          int direct, const agjk_vec3 *db_given,

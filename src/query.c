@@ -96,9 +96,9 @@ static AGJK__ALWAYS_INLINE agjk_status run_query(const agjk_shape *a, const agjk
         int early = !cache && start_normal_from_offset(&md, &in);
         agjk_vec3 normal = early ? offset_normal(pose_a, pose_b) : v3(0.0, 0.0, 0.0);
         agjk__start start;
-        /* (Two ellipsoids: the first plane test from their support values,
-         * before the support is taken at all, agjk__ellipsoids_apart; its
-         * answer is the offset's normal, so only with it.) */
+        /* (Ellipsoids and boxes: the first plane test from their support
+         * values, before the support is taken at all, agjk__start_apart;
+         * its answer is the offset's normal, so only with it.) */
         if (agjk__solve_start(&md, &in, &start, early) && !cache) {
             result->iterations = 1;
             result->support_calls = 1;

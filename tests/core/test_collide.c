@@ -192,23 +192,28 @@ END_TEST
 
 /* A Boolean query answered on its first support (iteration 1, one support
  * call) claims that the plane normal to the frames' offset separates the
- * shapes: A's extent along it ends before B's begins. Ellipsoid pairs with
- * random radii (1:100), rotations and positions (up to 1e3 from the
- * origin) are placed with those extents apart by -64 ... 64 ulps of their
- * size, where the rounding of the support values, of B's turned direction
- * and of the offset decides: the plane such an answer returns must
- * separate the shapes (their extents along it, in long double); and
- * it must come where they are clearly apart (1e-6 of the size), so that the
- * support values' test (agjk__ellipsoids_apart) is what is tested. */
+ * shapes: A's extent along it ends before B's begins. Ellipsoid, box and
+ * mixed pairs with random radii or half extents (1:100), rotations and
+ * positions (up to 1e3 from the origin) are placed with those extents apart
+ * by -64 ... 64 ulps of their size, where the rounding of the support
+ * values (agjk__start_apart), of B's turned direction and of the offset
+ * decides: the plane such an answer returns must separate the shapes (their
+ * extents along it, in long double); and pairs clearly apart (1e-6 of the
+ * size) must be answered on the first support, so that the support values'
+ * test is what is tested. */
 START_TEST(first_plane_along_offset) {
     tu_rng rng;
     tu_rng_seed(&rng, 64);
     int false_planes = 0, clear = 0, clear_answered = 0, near = 0, near_answered = 0;
     for (int i = 0; i < 4000; i++) {
         ref_shape a, b;
-        tu_shape_init(&a, REF_ELLIPSOID, tu_log_uniform(&rng, -1, 1), tu_log_uniform(&rng, -1, 1),
+        /* ellipsoid-ellipsoid, box-box, ellipsoid-box, box-ellipsoid */
+        tu_shape_init(&a, (i / 3) % 4 < 2 ? ((i / 3) % 2 ? REF_BOX : REF_ELLIPSOID)
+                                          : ((i / 3) % 2 ? REF_ELLIPSOID : REF_BOX),
+                      tu_log_uniform(&rng, -1, 1), tu_log_uniform(&rng, -1, 1),
                       tu_log_uniform(&rng, -1, 1));
-        tu_shape_init(&b, REF_ELLIPSOID, tu_log_uniform(&rng, -1, 1), tu_log_uniform(&rng, -1, 1),
+        tu_shape_init(&b, (i / 3) % 4 < 2 ? a.kind : (a.kind == REF_BOX ? REF_ELLIPSOID : REF_BOX),
+                      tu_log_uniform(&rng, -1, 1), tu_log_uniform(&rng, -1, 1),
                       tu_log_uniform(&rng, -1, 1));
         agjk_pose pa = tu_random_pose(&rng, i % 2 ? 1e3 : 1.0), pb = pa;
         tu_random_rotation(&rng, pb.rotation);
