@@ -63,13 +63,19 @@ def agjk_function_category(name, path):
     return None
 
 
+# Functions that stand for a support call wherever they are inlined: the
+# Minkowski wrapper, and the support values a Boolean query's first plane
+# test takes instead of the points (src/solver.h).
+SUPPORT_FUNCTIONS = ("agjk__minkowski_support", "agjk__support_value")
+
+
 def frame_category(frames):
     """Category of an instruction from its inline chain [(function, file)],
     innermost first (addr2line -i)."""
     for fn, path in frames:
         if re.search(r"/src/simplex[a-z0-9_]*\.c$", path):
             return SIMPLEX
-        if re.search(r"/src/shape_[a-z0-9_]*\.c$", path) or fn == "agjk__minkowski_support":
+        if re.search(r"/src/shape_[a-z0-9_]*\.c$", path) or fn in SUPPORT_FUNCTIONS:
             return SUPPORT
     for fn, path in frames:
         if "/src/" in path or fn == "measured_agjk":
