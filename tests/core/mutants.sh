@@ -4,7 +4,9 @@
 # deliberate bug each (in a temporary directory; the tree is not touched) and
 # runs the core tests against each copy. Every mutant must be caught by at
 # least one test, or the tests cannot see that kind of bug. A mutant whose
-# pattern no longer matches src/ is reported as "not applied" (update it).
+# pattern no longer matches src/, or that no longer builds, fails the check
+# too ("not applied", "does not build": update it), so that the list cannot
+# go stale unnoticed.
 # Not part of `make check` (about a minute): run `make mutants-core`.
 #   usage: tests/core/mutants.sh [OUT]   (OUT: the build dir, default out)
 set -u
@@ -19,22 +21,22 @@ trap 'rm -rf "$TMP"' EXIT
 
 # name | file | sed expression (the bug)
 MUTANTS='
-separating-plane-epsilon|src/solver.c|s/return v3_dot(d, w) > v3_norm(d) \* (md->margin + noise_scale(md));/return v3_dot(d, w) > v3_norm(d) * (md->margin - 1e-7);/
-separated-without-certificate|src/query.c|s/status = lower > md.margin ? AGJK_STATUS_SEPARATED/status = core > md.margin ? AGJK_STATUS_SEPARATED/
-bound-too-small|src/query.c|s/result->bound = distance - low;/result->bound = 0.1 * (distance - low);/
-ellipsoid-radius-typo|src/shape_ellipsoid.c|s/e->radii.z \* ddn.z \/ norm/e->radii.y * ddn.z \/ norm/
-relative-tolerance-ignores-margins|src/solver.c|s/double gap = x_norm - md->margin;/double gap = x_norm;/
-witness-without-margin|src/query.c|s/agjk_vec3 wa = v3_add(out.a, v3_scale(n_local, md.margin_a));/agjk_vec3 wa = out.a;/
+separating-plane-epsilon|src/minkowski.h|s/double r = md->margin + md->noise;/double r = md->margin - 1e-7;/
+separated-without-certificate|src/query.c|s/status = lower > agjk__minkowski_separation_level(&md)/status = cb.core > md.margin/
+bound-too-small|src/query.c|s/result->bound = (distance - low) \* inv;/result->bound = 0.1 * (distance - low) * inv;/
+ellipsoid-radius-typo|src/shape_points.h|s/\*q = v3(r.x \* x, r.y \* y, r.z \* z);/*q = v3(r.x * x, r.y * y, r.y * z);/
+relative-tolerance-ignores-margins|src/solver.c|s/double b = (half \* (x_norm - md->margin - 2.0 \* md->noise)/double b = (half * (x_norm - 2.0 * md->noise)/
+witness-without-margin|src/query.c|s/agjk_vec3 wa = v3_scale(v3_add(out.a, v3_scale(cb.toward_x, md.margin_a)), inv);/agjk_vec3 wa = v3_scale(out.a, inv);/
 simplex-origin-on-face-not-inside|src/simplex.c|s/return (mask == 0xFu || v3_norm2(point) == 0.0) ? AGJK_STATUS_INTERSECTING/return (mask == 0xFu) ? AGJK_STATUS_INTERSECTING/
 simplex-weights-permuted|src/simplex.c|s/projection->weights\[i\] = lambda\[i\];/projection->weights[i] = lambda[count - 1 - i];/
 cone-support-biased|src/shape_cone.c|s/v3_dot(\*direction, apex) >= v3_dot(\*direction, rim)/v3_dot(*direction, apex) >= 0.9 * v3_dot(*direction, rim)/
-hill-climb-stops-early|src/shape_polytope.c|s/        if (next == current) break;/        if (next == current || steps > 2) break;/
-rotation-check-loose|src/minkowski.c|s/#define ROTATION_TOLERANCE 1e-6/#define ROTATION_TOLERANCE 1e-1/
+hill-climb-stops-early|src/shape_polytope.c|s/        if (++c->moves == c->limit) return 0;/        if (++c->moves == c->limit || c->moves > 2) return 0;/
+rotation-check-loose|src/query_setup.c|s/#define ROTATION_TOLERANCE 1e-6/#define ROTATION_TOLERANCE 1e-1/
 gjk-projection-kkt-ignored|src/simplex.c|s/return m >= 0.0 || m \* m <= OPTIMALITY_RELATIVE/return 1 || m * m <= OPTIMALITY_RELATIVE/
 gjk-projection-inside-unchecked|src/simplex.c|s/na > DEGENERATE_RELATIVE \* (vol + n0 + n1 + n2)/na > -vol/
-gjk-projection-vertex-early|src/simplex.c|s/if (r0 >= 0.0 \&\& r1 >= 0.0 \&\& r2 >= 0.0) return vertex_output/if (r0 >= 0.0 \&\& r1 >= 0.0) return vertex_output/
+gjk-projection-vertex-early|src/simplex.c|s/if (r\[0\] >= 0.0 \&\& r\[1\] >= 0.0 \&\& r\[2\] >= 0.0) return vertex_output/if (r[0] >= 0.0 \&\& r[1] >= 0.0) return vertex_output/
 gjk-projection-thin-face|src/simplex.c|s/#define WELL_CONDITIONED 1e-2/#define WELL_CONDITIONED 0.0/
-gjk-projection-foot-from-newest|src/simplex.c|s/v3_dot(nrm, w\[iq\])/v3_dot(nrm, a)/
+gjk-projection-foot-from-newest|src/simplex.c|s/v3_dot(nrm, w\[iq\])/v3_dot(nrm, w[ia])/
 gjk-projection-edge-weight-by-difference|src/simplex.c|s/double s = v3_dot(b, u) \/ uu;/double s = 1.0 - (1.0 - v3_dot(b, u) \/ uu);/
 ellipsoids-apart-without-allowance|src/solver.h|s/double r = md->margin + 128.0 \* DBL_EPSILON \* size;/double r = md->margin;/
 '
@@ -46,12 +48,16 @@ echo "$MUTANTS" | while IFS='|' read -r name file expr; do
     mkdir -p "$d"
     cp -r "$ROOT/src" "$ROOT/include" "$d/"
     sed -i "$expr" "$d/$file"
-    if cmp -s "$ROOT/$file" "$d/$file"; then echo "$name: not applied (pattern gone from $file)"; continue; fi
+    if cmp -s "$ROOT/$file" "$d/$file"; then
+        echo "$name: not applied (pattern gone from $file)"
+        echo x >> "$TMP/stale"
+        continue
+    fi
     ok=1
     for f in "$d"/src/*.c; do
         $CC -std=c99 -O2 -ffp-contract=off -I"$d/include" -c "$f" -o "${f%.c}.o" || ok=0
     done
-    [ $ok = 1 ] || { echo "$name: does not build"; continue; }
+    [ $ok = 1 ] || { echo "$name: does not build"; echo x >> "$TMP/stale"; continue; }
     ar rcs "$d/libagjk.a" "$d"/src/*.o
     caught=""
     for t in $TESTS; do
@@ -62,4 +68,5 @@ echo "$MUTANTS" | while IFS='|' read -r name file expr; do
     if [ -n "$caught" ]; then echo "$name: caught by$caught"; else echo "$name: ESCAPED"; echo x >> "$TMP/escaped"; fi
 done
 if [ -f "$TMP/escaped" ]; then echo "some mutants escaped the tests"; exit 1; fi
-echo "all applied mutants caught"
+if [ -f "$TMP/stale" ]; then echo "some mutants no longer apply to src/: update them"; exit 1; fi
+echo "all $(echo "$MUTANTS" | grep -c '|') mutants caught"
