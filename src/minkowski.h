@@ -311,7 +311,10 @@ static AGJK__ALWAYS_INLINE void agjk__minkowski_support(agjk__minkowski *md, agj
         double dm = v3_maxabs(d);
         if (!(dm >= md->direction_min && dm <= AGJK__DIRECTION_MAX)) {
             d = agjk__minkowski_rescue_direction(md, d);
-            db_given = NULL; /* (for the direction before its rescue) */
+            /* (for the direction before its rescue; a first support's
+             * unit-size direction never needs one) */
+            db_given = NULL;
+            root_a = root_b = 0.0;
         }
     }
     agjk_vec3 na = v3_neg(d);

@@ -308,10 +308,9 @@ static inline int agjk__has_support_value(agjk_support_fn fn) {
  * try_apart (the caller answers such a start with the world offset's
  * normal) and the support values of two ellipsoids or boxes showed that
  * before any support was taken (agjk__start_apart). Such a start ends the
- * query
- * before the solver sets anything up: its caller answers from it alone (a
- * tenth of a one-support query's instructions; inline, so that the point
- * stays in registers). */
+ * query before the solver sets anything up: its caller answers from it
+ * alone (a tenth of a one-support query's instructions; inline, so that the
+ * point stays in registers). */
 static AGJK__ALWAYS_INLINE int agjk__first_support(agjk__minkowski *md,
                                                    const agjk__solve_input *in, agjk__vertex *s,
                                                    agjk_vec3 *x_out, int try_apart) {
