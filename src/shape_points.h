@@ -39,31 +39,37 @@ static inline agjk_vec3 agjk__segment_point(const agjk_capsule *c, agjk_vec3 d) 
     return v3(0.0, 0.0, signed_extent(c->half_height, d.z));
 }
 
-/* Ellipsoid {p : sum (p_i / r_i)^2 <= 1}: its support point is
- * D^2 d / ||D d|| with D = diag(r). Here q = D^2 d and *inv = 1 / ||D d||,
- * when ||D d||^2 lies far from underflow and overflow (the common case: one
- * square root and one division). Returns 0, with nothing written, otherwise
- * (tiny or huge directions, stiff radii: shape_ellipsoid.c rescales first).
- * Power-of-two scalings of d or of the radii scale every step exactly, so
- * answers stay bit-equivariant. */
-static inline int agjk__ellipsoid_unnormalized(const agjk_ellipsoid *e, agjk_vec3 d, agjk_vec3 *q,
-                                               double *inv) {
+/* Ellipsoid {p : sum (p_i / r_i)^2 <= 1}: its support value is ||D d||
+ * with D = diag(r), into *root when ||D d||^2 lies far from underflow and
+ * overflow; returns 0, with nothing written, otherwise (tiny or huge
+ * directions, stiff radii: shape_ellipsoid.c rescales first). */
+static inline int agjk__ellipsoid_root(const agjk_ellipsoid *e, agjk_vec3 d, double *root) {
     agjk_vec3 r = e->radii;
     double x = r.x * d.x, y = r.y * d.y, z = r.z * d.z; /* D d */
     double n2 = x * x + y * y + z * z;
     if (!(n2 >= 0x1p-900 && n2 <= 0x1p900)) return 0;
-    *inv = 1.0 / sqrt(n2);
-    *q = v3(r.x * x, r.y * y, r.z * z);
+    *root = sqrt(n2);
     return 1;
 }
 
-/* The same with ||D d|| already known (root > 0, computed as here: the
- * square root of the same sum of squares): the same bits. */
+/* Its support point is D^2 d / ||D d||: q = D^2 d and *inv = 1 / ||D d||
+ * from the root above (one square root and one division). Power-of-two
+ * scalings of d or of the radii scale every step exactly, so answers stay
+ * bit-equivariant. */
 static inline void agjk__ellipsoid_from_root(const agjk_ellipsoid *e, agjk_vec3 d, double root,
                                              agjk_vec3 *q, double *inv) {
     agjk_vec3 r = e->radii;
     *inv = 1.0 / root;
     *q = v3(r.x * (r.x * d.x), r.y * (r.y * d.y), r.z * (r.z * d.z));
+}
+
+/* Both: q and *inv, or 0 as agjk__ellipsoid_root. */
+static inline int agjk__ellipsoid_unnormalized(const agjk_ellipsoid *e, agjk_vec3 d, agjk_vec3 *q,
+                                               double *inv) {
+    double root;
+    if (!agjk__ellipsoid_root(e, d, &root)) return 0;
+    agjk__ellipsoid_from_root(e, d, root, q, inv);
+    return 1;
 }
 
 /* The support point itself, q / ||D d||. */

@@ -220,11 +220,11 @@ typedef struct agjk__start {
 } agjk__start;
 
 /* The support value h(d) = max <d, p> over a built-in ellipsoid (||D d||,
- * D its radii) or box (sum h_i |d_i|, h its half extents), computed without
- * the point. For an ellipsoid, *root is ||D d|| too (for its support point:
- * the square root of the same sum of squares); d and -d give the same
- * values. Returns 0 for other shapes, and for an ellipsoid whose ||D d||^2
- * lies near underflow or overflow. */
+ * D its radii: agjk__ellipsoid_root) or box (sum h_i |d_i|, h its half
+ * extents), computed without the point. For an ellipsoid, *root is ||D d||
+ * too, for its support point (agjk__ellipsoid_from_root); d and -d give
+ * the same values. Returns 0 for other shapes, and for an ellipsoid whose
+ * ||D d||^2 lies near underflow or overflow. */
 static AGJK__ALWAYS_INLINE int agjk__support_value(agjk_support_fn fn, const void *data,
                                                    agjk_vec3 d, double *h, double *root) {
     if (agjk__is_box(fn)) {
@@ -232,12 +232,8 @@ static AGJK__ALWAYS_INLINE int agjk__support_value(agjk_support_fn fn, const voi
         *h = e.x * fabs(d.x) + e.y * fabs(d.y) + e.z * fabs(d.z);
         return 1;
     }
-    if (agjk__is_ellipsoid(fn)) {
-        agjk_vec3 r = ((const agjk_ellipsoid *)data)->radii;
-        double x = r.x * d.x, y = r.y * d.y, z = r.z * d.z; /* D d */
-        double n2 = x * x + y * y + z * z;
-        if (!(n2 >= 0x1p-900 && n2 <= 0x1p900)) return 0;
-        *h = *root = sqrt(n2);
+    if (agjk__is_ellipsoid(fn) && agjk__ellipsoid_root((const agjk_ellipsoid *)data, d, root)) {
+        *h = *root;
         return 1;
     }
     return 0;
