@@ -49,6 +49,7 @@ static const workload workloads[] = {
     {"boxes-overlapping-boolean", BENCH_BOXES, BENCH_OVERLAPPING, BENCH_BOOLEAN, 0},
     {"boxes-close-boolean", BENCH_BOXES, BENCH_CLOSE, BENCH_BOOLEAN, 0},
     {"ellipsoids-close-boolean", BENCH_ELLIPSOIDS, BENCH_CLOSE, BENCH_BOOLEAN, 0},
+    {"ellipsoids-overlapping-boolean", BENCH_ELLIPSOIDS, BENCH_OVERLAPPING, BENCH_BOOLEAN, 0},
     {"ellipsoids-distant-distance", BENCH_ELLIPSOIDS, BENCH_DISTANT, BENCH_DISTANCE, 0},
     {"hulls-overlapping", BENCH_HULLS, BENCH_OVERLAPPING, BENCH_DISTANCE, 141},
 };
