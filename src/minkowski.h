@@ -433,14 +433,18 @@ static AGJK__ALWAYS_INLINE void agjk__minkowski_support(agjk__minkowski *md, agj
 /* Alg. 2: the plane of normal d through s separates D (inflated by the margins)
  * from the origin when <d, s> > ||d|| (margin + rounding): squared, with no
  * square root, when d has a safe size (the support path keeps directions in
- * [2^-60, 2^100], so this is the common case). */
+ * [2^-60, 2^100], so this is the common case). The size is told by the
+ * squared norm the test needs anyway: |d|^2 in [2^-118, 2^198] puts
+ * max |d_i| in [2^-60, 2^99] (|d| / sqrt(3) <= max |d_i| <= |d|), where
+ * max |d_i| itself took three absolute values and two comparisons more at
+ * every iteration of a Boolean query. */
 static inline int agjk__minkowski_separates(const agjk__minkowski *md, agjk_vec3 d,
                                             agjk_vec3 w) {
     double r = md->margin + md->noise;
-    double dm = v3_maxabs(d);
-    if (dm >= AGJK__DIRECTION_MIN && dm <= AGJK__DIRECTION_MAX) {
+    double n2 = v3_norm2(d);
+    if (n2 >= 0x1p-118 && n2 <= 0x1p198) {
         double dw = v3_dot(d, w);
-        return dw > 0.0 && dw * dw > v3_norm2(d) * r * r;
+        return dw > 0.0 && dw * dw > n2 * r * r;
     }
     /* The unit direction, as the support function saw it: a denormal d has
      * too few significant bits for <d, w> to mean anything. */
