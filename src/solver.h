@@ -39,11 +39,30 @@ enum { AGJK__PHASE_FIXED = 0, AGJK__PHASE_POLYAK, AGJK__PHASE_NESTEROV, AGJK__PH
 void agjk__momentum_init(agjk__momentum *m, agjk_method method, agjk_vec3 x0, int given,
                          int boolean);
 
+/* Momentum weights for the first AGJK__MOMENTUM_TABLE iterations, as
+ * constants (direction.c): Nesterov's delta_k = (k+1)/(k+3) and Polyak's
+ * 1/(k+1), the very values the divisions give (correctly rounded either
+ * way). The divider is the one unit every iteration queues on: the
+ * ellipsoid supports' square roots and divisions and the projection's two
+ * divisions share it with these. */
+#define AGJK__MOMENTUM_TABLE 64
+extern const double agjk__nesterov_delta[AGJK__MOMENTUM_TABLE];
+extern const double agjk__polyak_delta[AGJK__MOMENTUM_TABLE];
+
+static inline double agjk__nesterov_weight(int k) {
+    return k < AGJK__MOMENTUM_TABLE ? agjk__nesterov_delta[k]
+                                    : ((double)k + 1.0) / ((double)k + 3.0);
+}
+
+static inline double agjk__polyak_weight(int k) {
+    return k < AGJK__MOMENTUM_TABLE ? agjk__polyak_delta[k] : 1.0 / ((double)k + 1.0);
+}
+
 /* Alg. 6 lines 1-3: delta_k = (k+1)/(k+3),
  * y_k = delta_k x_k + (1 - delta_k) s_{k-1},
  * d_k = delta_k d_{k-1} + (1 - delta_k) grad f(y_k). */
 static inline agjk_vec3 agjk__nesterov_mix(const agjk__momentum *m, int k, agjk_vec3 x) {
-    double delta = ((double)k + 1.0) / ((double)k + 3.0), rest = 1.0 - delta;
+    double delta = agjk__nesterov_weight(k), rest = 1.0 - delta;
     /* Expanded, d_k = delta (1 - delta) x_k + c with c = delta d_{k-1} +
      * (1 - delta)^2 s_{k-1}: c is ready before x_k, so x_k reaches d_k
      * through one multiplication and one addition instead of two of each
@@ -77,7 +96,7 @@ static AGJK__ALWAYS_INLINE agjk_vec3 agjk__momentum_direction(const agjk__moment
     if (m->method == AGJK_METHOD_NESTEROV)
         return agjk__direction_or_gradient(agjk__nesterov_mix(m, k, x), x);
     if (m->method == AGJK_METHOD_POLYAK)
-        return agjk__direction_or_gradient(agjk__polyak_mix(m, 1.0 / ((double)k + 1.0), x), x);
+        return agjk__direction_or_gradient(agjk__polyak_mix(m, agjk__polyak_weight(k), x), x);
     return agjk__momentum_direction_other(m, k, x);
 }
 
