@@ -420,3 +420,6 @@ agjk_vec3 agjk__momentum_direction_other(const agjk__momentum *m, int k, agjk_ve
     }
     return agjk__direction_or_gradient(d, x);
 }
+
+/* (solver.h: agjk__direction_or_gradient's rare case.) */
+AGJK__NOINLINE AGJK__COLD agjk_vec3 agjk__gradient_instead(agjk_vec3 x) { return x; }

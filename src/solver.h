@@ -77,12 +77,19 @@ static inline agjk_vec3 agjk__polyak_mix(const agjk__momentum *m, double delta, 
     return v3_lerp2(m->d_prev, delta, x, 1.0 - delta);
 }
 
+/* x itself, out of line (direction.c): called only when a momentum
+ * combination carries no direction, so that the test below compiles to a
+ * branch, predicted, rather than to a select the next support's direction
+ * would wait for (agjk-bench, same-run: overlapping Boolean boxes with
+ * Polyak 3.1% faster, hulls 1-3%). */
+agjk_vec3 agjk__gradient_instead(agjk_vec3 x);
+
 /* A zero or non-finite combination carries no direction: the gradient x
  * instead. (One test: the 1-norm is NaN or Inf with any such coordinate, and
  * 0 only for the zero vector.) */
 static inline agjk_vec3 agjk__direction_or_gradient(agjk_vec3 d, agjk_vec3 x) {
     double n1 = v3_norm1(d);
-    return n1 > 0.0 && n1 <= DBL_MAX ? d : x;
+    return n1 > 0.0 && n1 <= DBL_MAX ? d : agjk__gradient_instead(x);
 }
 
 /* Normalised Nesterov and the adaptive rule (direction.c). */
