@@ -24,7 +24,7 @@ MUTANTS='
 separating-plane-epsilon|src/minkowski.h|s/double r = md->margin + md->noise;/double r = md->margin - 1e-7;/
 separated-without-certificate|src/query.c|s/status = lower > agjk__minkowski_separation_level(&md)/status = cb.core > md.margin/
 bound-too-small|src/query.c|s/result->bound = (distance - low) \* inv;/result->bound = 0.1 * (distance - low) * inv;/
-ellipsoid-radius-typo|src/shape_points.h|s/\*q = v3(r.x \* x, r.y \* y, r.z \* z);/*q = v3(r.x * x, r.y * y, r.y * z);/
+ellipsoid-radius-typo|src/shape_points.h|s/r.z \* (r.z \* d.z)/r.y * (r.z * d.z)/
 relative-tolerance-ignores-margins|src/solver.c|s/double b = (half \* (x_norm - md->margin - 2.0 \* md->noise)/double b = (half * (x_norm - 2.0 * md->noise)/
 witness-without-margin|src/query.c|s/agjk_vec3 wa = v3_scale(v3_add(out.a, v3_scale(cb.toward_x, md.margin_a)), inv);/agjk_vec3 wa = v3_scale(out.a, inv);/
 simplex-origin-on-face-not-inside|src/simplex.c|s/return (mask == 0xFu || v3_norm2(point) == 0.0) ? AGJK_STATUS_INTERSECTING/return (mask == 0xFu) ? AGJK_STATUS_INTERSECTING/
@@ -36,7 +36,7 @@ gjk-projection-kkt-ignored|src/simplex.c|s/return m >= 0.0 || m \* m <= OPTIMALI
 gjk-projection-inside-unchecked|src/simplex.c|s/na > DEGENERATE_RELATIVE \* (vol + n0 + n1 + n2)/na > -vol/
 gjk-projection-vertex-early|src/simplex.c|s/if (r\[0\] >= 0.0 \&\& r\[1\] >= 0.0 \&\& r\[2\] >= 0.0) return vertex_output/if (r[0] >= 0.0 \&\& r[1] >= 0.0) return vertex_output/
 gjk-projection-thin-face|src/simplex.c|s/#define WELL_CONDITIONED 1e-2/#define WELL_CONDITIONED 0.0/
-gjk-projection-foot-from-newest|src/simplex.c|s/v3_dot(nrm, w\[iq\])/v3_dot(nrm, w[ia])/
+gjk-projection-foot-from-newest|src/simplex.c|s/v3_dot(nrm, w\[face->iq\])/v3_dot(nrm, w[ia])/
 gjk-projection-edge-weight-by-difference|src/simplex.c|s/double s = v3_dot(b, u) \/ uu;/double s = 1.0 - (1.0 - v3_dot(b, u) \/ uu);/
 ellipsoids-apart-without-allowance|src/solver.h|s/double r = md->margin + 128.0 \* DBL_EPSILON \* size;/double r = md->margin;/
 '
