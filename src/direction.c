@@ -43,7 +43,6 @@
  * the extra support in direction x_k that Alg. 6 pays to get a duality gap. */
 #include "solver.h"
 
-
 /* (solver.h: agjk__nesterov_weight, agjk__polyak_weight) */
 const double agjk__nesterov_delta[AGJK__MOMENTUM_TABLE] = {
     1.0 / 3.0, 2.0 / 4.0, 3.0 / 5.0, 4.0 / 6.0,
