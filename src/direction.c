@@ -43,41 +43,16 @@
  * the extra support in direction x_k that Alg. 6 pays to get a duality gap. */
 #include "solver.h"
 
-/* (solver.h: agjk__nesterov_weight, agjk__polyak_weight) */
-const double agjk__nesterov_delta[AGJK__MOMENTUM_TABLE] = {
-    1.0 / 3.0, 2.0 / 4.0, 3.0 / 5.0, 4.0 / 6.0,
-    5.0 / 7.0, 6.0 / 8.0, 7.0 / 9.0, 8.0 / 10.0,
-    9.0 / 11.0, 10.0 / 12.0, 11.0 / 13.0, 12.0 / 14.0,
-    13.0 / 15.0, 14.0 / 16.0, 15.0 / 17.0, 16.0 / 18.0,
-    17.0 / 19.0, 18.0 / 20.0, 19.0 / 21.0, 20.0 / 22.0,
-    21.0 / 23.0, 22.0 / 24.0, 23.0 / 25.0, 24.0 / 26.0,
-    25.0 / 27.0, 26.0 / 28.0, 27.0 / 29.0, 28.0 / 30.0,
-    29.0 / 31.0, 30.0 / 32.0, 31.0 / 33.0, 32.0 / 34.0,
-    33.0 / 35.0, 34.0 / 36.0, 35.0 / 37.0, 36.0 / 38.0,
-    37.0 / 39.0, 38.0 / 40.0, 39.0 / 41.0, 40.0 / 42.0,
-    41.0 / 43.0, 42.0 / 44.0, 43.0 / 45.0, 44.0 / 46.0,
-    45.0 / 47.0, 46.0 / 48.0, 47.0 / 49.0, 48.0 / 50.0,
-    49.0 / 51.0, 50.0 / 52.0, 51.0 / 53.0, 52.0 / 54.0,
-    53.0 / 55.0, 54.0 / 56.0, 55.0 / 57.0, 56.0 / 58.0,
-    57.0 / 59.0, 58.0 / 60.0, 59.0 / 61.0, 60.0 / 62.0,
-    61.0 / 63.0, 62.0 / 64.0, 63.0 / 65.0, 64.0 / 66.0};
-const double agjk__polyak_delta[AGJK__MOMENTUM_TABLE] = {
-    1.0 / 1.0, 1.0 / 2.0, 1.0 / 3.0, 1.0 / 4.0,
-    1.0 / 5.0, 1.0 / 6.0, 1.0 / 7.0, 1.0 / 8.0,
-    1.0 / 9.0, 1.0 / 10.0, 1.0 / 11.0, 1.0 / 12.0,
-    1.0 / 13.0, 1.0 / 14.0, 1.0 / 15.0, 1.0 / 16.0,
-    1.0 / 17.0, 1.0 / 18.0, 1.0 / 19.0, 1.0 / 20.0,
-    1.0 / 21.0, 1.0 / 22.0, 1.0 / 23.0, 1.0 / 24.0,
-    1.0 / 25.0, 1.0 / 26.0, 1.0 / 27.0, 1.0 / 28.0,
-    1.0 / 29.0, 1.0 / 30.0, 1.0 / 31.0, 1.0 / 32.0,
-    1.0 / 33.0, 1.0 / 34.0, 1.0 / 35.0, 1.0 / 36.0,
-    1.0 / 37.0, 1.0 / 38.0, 1.0 / 39.0, 1.0 / 40.0,
-    1.0 / 41.0, 1.0 / 42.0, 1.0 / 43.0, 1.0 / 44.0,
-    1.0 / 45.0, 1.0 / 46.0, 1.0 / 47.0, 1.0 / 48.0,
-    1.0 / 49.0, 1.0 / 50.0, 1.0 / 51.0, 1.0 / 52.0,
-    1.0 / 53.0, 1.0 / 54.0, 1.0 / 55.0, 1.0 / 56.0,
-    1.0 / 57.0, 1.0 / 58.0, 1.0 / 59.0, 1.0 / 60.0,
-    1.0 / 61.0, 1.0 / 62.0, 1.0 / 63.0, 1.0 / 64.0};
+/* (solver.h: agjk__nesterov_weight, agjk__polyak_weight) The formulas at
+ * k = 0 ... 63, folded by the compiler: an exact integer in k converts to
+ * the same double as at run time, and the division rounds the same way. */
+#define AGJK__TABLE4(f, k) f(k), f(k + 1), f(k + 2), f(k + 3)
+#define AGJK__TABLE16(f, k) AGJK__TABLE4(f, k), AGJK__TABLE4(f, k + 4), AGJK__TABLE4(f, k + 8), \
+                            AGJK__TABLE4(f, k + 12)
+#define AGJK__TABLE64(f) AGJK__TABLE16(f, 0), AGJK__TABLE16(f, 16), AGJK__TABLE16(f, 32), \
+                         AGJK__TABLE16(f, 48)
+const double agjk__nesterov_delta[AGJK__MOMENTUM_TABLE] = {AGJK__TABLE64(AGJK__NESTEROV_DELTA)};
+const double agjk__polyak_delta[AGJK__MOMENTUM_TABLE] = {AGJK__TABLE64(AGJK__POLYAK_DELTA)};
 
 /* The shapes count as far apart while the best support plane is at least this
  * fraction of ||x_k|| (a relative gap below 10%); below it the Polyak phase
@@ -367,7 +342,7 @@ agjk_vec3 agjk__momentum_direction_other(const agjk__momentum *m, int k, agjk_ve
         /* Alg. 7 (eq. 31): Nesterov's mix with both terms normalised, so that
          * the momentum does not swamp the gradient as ||d|| grows relative to
          * ||y|| (which stalls momentum early on polytopes). */
-        double delta = (kk + 1.0) / (kk + 3.0);
+        double delta = AGJK__NESTEROV_DELTA(kk);
         agjk_vec3 y = v3_lerp2(x, delta, m->s_prev, 1.0 - delta);
         agjk_vec3 dn = v3_normalize(m->d_prev);
         double yy = v3_norm2(y);
@@ -397,7 +372,7 @@ agjk_vec3 agjk__momentum_direction_other(const agjk__momentum *m, int k, agjk_ve
         if (plain) {
             d = x;
         } else if (m->phase == AGJK__PHASE_POLYAK) { /* with a lighter first momentum step */
-            d = agjk__polyak_mix(m, k == 1 ? ADAPTIVE_POLYAK_FIRST : 1.0 / (kk + 1.0), x);
+            d = agjk__polyak_mix(m, k == 1 ? ADAPTIVE_POLYAK_FIRST : AGJK__POLYAK_DELTA(kk), x);
         } else {
             d = agjk__nesterov_mix(m, k, x);
             /* A Nesterov direction against the gradient (or, right after a

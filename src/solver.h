@@ -47,16 +47,17 @@ void agjk__momentum_init(agjk__momentum *m, agjk_method method, agjk_vec3 x0, in
  * square roots and divisions and the projection's divisions need too
  * (close Boolean ellipsoids with Nesterov: 3% of their time). */
 #define AGJK__MOMENTUM_TABLE 64
+#define AGJK__NESTEROV_DELTA(k) (((k) + 1.0) / ((k) + 3.0))
+#define AGJK__POLYAK_DELTA(k) (1.0 / ((k) + 1.0))
 extern const double agjk__nesterov_delta[AGJK__MOMENTUM_TABLE];
 extern const double agjk__polyak_delta[AGJK__MOMENTUM_TABLE];
 
 static inline double agjk__nesterov_weight(int k) {
-    return k < AGJK__MOMENTUM_TABLE ? agjk__nesterov_delta[k]
-                                    : ((double)k + 1.0) / ((double)k + 3.0);
+    return k < AGJK__MOMENTUM_TABLE ? agjk__nesterov_delta[k] : AGJK__NESTEROV_DELTA((double)k);
 }
 
 static inline double agjk__polyak_weight(int k) {
-    return k < AGJK__MOMENTUM_TABLE ? agjk__polyak_delta[k] : 1.0 / ((double)k + 1.0);
+    return k < AGJK__MOMENTUM_TABLE ? agjk__polyak_delta[k] : AGJK__POLYAK_DELTA((double)k);
 }
 
 /* Alg. 6 lines 1-3: delta_k = (k+1)/(k+3),
