@@ -589,16 +589,12 @@ static unsigned tetra_inside(const agjk_vec3 *w, const agjk_vec3 *e, const doubl
     int clear = n0 > 0.0 && n0 * n0 > m2 * aa * g11 * g22 && n1 > 0.0 &&
                 n1 * n1 > m2 * aa * g22 * g00 && n2 > 0.0 && n2 * n2 > m2 * aa * g00 * g11 &&
                 na > DEGENERATE_RELATIVE * (vol + n0 + n1 + n2);
-    if (!(clear && vol * vol > WELL_SHAPED * g00 * g11 * g22)) {
-        *thin = clear;
+    if (!clear) {
+        *thin = 0;
         return 0u;
     }
-    double inv = 1.0 / vol;
-    lambda[0] = n0 * inv;
-    lambda[1] = n1 * inv;
-    lambda[2] = n2 * inv;
-    lambda[3] = na * inv;
-    *point = v3(0.0, 0.0, 0.0);
+    /* The signed volumes hold for a thin tetrahedron too: the overlap's
+     * certification may read them either way (thin_inside). */
     if (notes) {
         agjk__inside *inside = &notes->inside;
         inside->h[0] = n0;
@@ -608,9 +604,18 @@ static unsigned tetra_inside(const agjk_vec3 *w, const agjk_vec3 *e, const doubl
         inside->g[1] = g11;
         inside->g[2] = g22;
         inside->orientation = orientation;
-        return 0xFu | AGJK__INSIDE_REPORTED;
     }
-    return 0xFu;
+    if (!(vol * vol > WELL_SHAPED * g00 * g11 * g22)) {
+        *thin = 1;
+        return 0u;
+    }
+    double inv = 1.0 / vol;
+    lambda[0] = n0 * inv;
+    lambda[1] = n1 * inv;
+    lambda[2] = n2 * inv;
+    lambda[3] = na * inv;
+    *point = v3(0.0, 0.0, 0.0);
+    return notes ? 0xFu | AGJK__INSIDE_REPORTED : 0xFu;
 }
 
 /* A thin tetrahedron's projection (tetra_inside's *thin): what the
@@ -618,11 +623,15 @@ static unsigned tetra_inside(const agjk_vec3 *w, const agjk_vec3 *e, const doubl
  * path (as a call to the exhaustive projection, kept with the cold code,
  * it cost overlapping ellipsoids with Nesterov 5% of their time). */
 static unsigned thin_inside(const agjk_vec3 *w, int exhaustive, double lambda[4],
-                            agjk_vec3 *point) {
+                            agjk_vec3 *point, const agjk__projection_notes *notes) {
     double c[4], sum;
     if (apex_coordinates(w, c, &sum)) {
         unsigned mask = enclosed_weights(c, sum, lambda, point);
-        if (mask) return tighten(mask, lambda, 4); /* as agjk__simplex_project */
+        if (mask) {
+            mask = tighten(mask, lambda, 4); /* as agjk__simplex_project */
+            /* (notes->inside holds tetra_inside's signed volumes) */
+            return mask == 0xFu && notes ? mask | AGJK__INSIDE_REPORTED : mask;
+        }
     }
     return decline(w, 4, exhaustive, lambda, point);
 }
@@ -689,7 +698,7 @@ static unsigned gjk_tetrahedron(const agjk_vec3 *w, int exhaustive, double lambd
          * with Nesterov, about one query in two ends so (before, every
          * time inside by the exhaustive projection after every face and
          * edge had failed). */
-        if (thin) return thin_inside(w, exhaustive, lambda, point);
+        if (thin) return thin_inside(w, exhaustive, lambda, point, notes);
     }
     if (!holds) {
         k = back == 0 ? 1 : 0;
@@ -716,7 +725,7 @@ static unsigned gjk_tetrahedron(const agjk_vec3 *w, int exhaustive, double lambd
     if (!mask && !inward) {
         int thin = 0;
         mask = tetra_inside(w, e, gd, lambda, point, notes, &thin);
-        if (thin) return thin_inside(w, exhaustive, lambda, point);
+        if (thin) return thin_inside(w, exhaustive, lambda, point, notes);
     }
     return mask ? mask : decline(w, 4, exhaustive, lambda, point);
 }
