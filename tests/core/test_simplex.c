@@ -8,9 +8,10 @@
  * The same checks for the internal projection specialised for GJK
  * (agjk__simplex_project_gjk, src/simplex.h), on the same simplices, on
  * simplices built the way GJK builds them (runs of GJK on random point
- * clouds), and on adversarial ones where the newest vertex is not in the
- * optimal face; its fast path alone (agjk__simplex_project_gjk_fast) must be
- * right whenever it answers. */
+ * clouds), on adversarial ones where the newest vertex is not in the
+ * optimal face, and on thin tetrahedra holding the origin; its fast path
+ * alone (agjk__simplex_project_gjk_fast) must be right whenever it
+ * answers. */
 #include <float.h>
 #include <math.h>
 #include <stdio.h>
@@ -797,6 +798,59 @@ START_TEST(gjk_near_contact) {
 }
 END_TEST
 
+START_TEST(gjk_thin_enclosure) {
+    /* Tetrahedra flat to 1e-4 .. 1e-3 of their size (the last step of a
+     * momentum run on overlapping shapes), holding the origin well inside:
+     * a base triangle around the origin just below it and an apex just
+     * above, turned, scaled and in any vertex order. The inside test's
+     * signed volumes hold for them too, and the projection reports them for
+     * the solver's overlap certificate (checked against long double by
+     * check_inside), while the weights are the exhaustive projection's. */
+    tu_rng rng;
+    tu_rng_seed(&rng, 19);
+    gjk_counts counts = {{0}, {0}};
+    long before = inside_reported;
+    int enclosed = 0;
+    for (int i = 0; i < 20000; i++) {
+        double size = tu_log_uniform(&rng, -3, 3), flat = tu_log_uniform(&rng, -4, -3);
+        double rot[3][3];
+        tu_random_rotation(&rng, rot);
+        agjk_vec3 local[4];
+        double start = tu_uniform_range(&rng, 0.0, 6.283185307179586);
+        for (int k = 0; k < 3; k++) {
+            double th = start + 2.0943951023931957 * k + tu_uniform_range(&rng, -0.4, 0.4);
+            local[k] = tu_vec(cos(th), sin(th), -flat * tu_uniform_range(&rng, 0.2, 1.0));
+        }
+        local[3] = tu_vec(tu_uniform_range(&rng, -0.2, 0.2), tu_uniform_range(&rng, -0.2, 0.2),
+                          flat * tu_uniform_range(&rng, 0.2, 1.0));
+        int first = (int)tu_uniform_int(&rng, 4); /* which vertex comes last (the newest) */
+        agjk_vec3 w[4];
+        for (int k = 0; k < 4; k++) {
+            agjk_vec3 v = local[(first + 1 + k) % 4];
+            w[k] = tu_scale(tu_vec(rot[0][0] * v.x + rot[0][1] * v.y + rot[0][2] * v.z,
+                                   rot[1][0] * v.x + rot[1][1] * v.y + rot[1][2] * v.z,
+                                   rot[2][0] * v.x + rot[2][1] * v.y + rot[2][2] * v.z),
+                            size);
+        }
+        double l[4], lo[4];
+        agjk_vec3 p, po;
+        unsigned mask = check_gjk(w, 4, "gjk thin enclosure", i, &counts, l, &p);
+        unsigned mo = agjk__simplex_project(w, 4, lo, &po);
+        if (mo != 0xFu) continue; /* (the apex's tilt left the origin outside) */
+        TU_ENSURE(mask == 0xFu && memcmp(l, lo, sizeof l) == 0,
+                  "gjk thin enclosure %d: mask 0x%x, or weights other than the exhaustive "
+                  "projection's", i, mask);
+        enclosed++;
+    }
+    print_counts("gjk_thin_enclosure", &counts);
+    long reported = inside_reported - before;
+    printf("gjk_thin_enclosure: %ld of %d enclosures with the inside test's data\n", reported,
+           enclosed);
+    TU_ENSURE(enclosed > 10000 && reported >= enclosed * 9 / 10,
+              "only %ld of %d thin enclosures reported", reported, enclosed);
+}
+END_TEST
+
 int main(void) {
     Suite *s = suite_create("simplex");
     TU_ADD(s, random_simplices);
@@ -811,5 +865,6 @@ int main(void) {
     TU_ADD(s, gjk_adversarial);
     TU_ADD(s, gjk_far_small);
     TU_ADD(s, gjk_near_contact);
+    TU_ADD(s, gjk_thin_enclosure);
     return tu_run_suite(s);
 }
