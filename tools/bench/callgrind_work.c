@@ -246,11 +246,11 @@ int main(int argc, char **argv) {
                         "AGJK_WORK_WITNESS=1, AGJK_WORK_VS=mpr (time: libccd's MPR "
                         "instead of Coal), AGJK_WORK_PER_PROBLEM=1 (time: each "
                         "problem's times on stderr)\n"
-                        "WORKLOAD: ellipsoids-close boxes-close hulls-close ellipsoids-overlapping "
-                        "ellipsoids-distant boxes-distant hulls-distant boxes-overlapping "
-                        "boxes-overlapping-boolean boxes-close-boolean "
-                        "ellipsoids-close-boolean ellipsoids-distant-distance "
-                        "hulls-overlapping\n");
+                        "WORKLOAD:");
+        /* (from the table: the list cannot go stale) */
+        for (i = 0; i < (int)(sizeof workloads / sizeof workloads[0]); ++i)
+            fprintf(stderr, " %s", workloads[i].name);
+        fprintf(stderr, "\n");
         return 2;
     }
     coal = strcmp(argv[1], "coal") == 0;
