@@ -813,8 +813,8 @@ START_TEST(gjk_thin_enclosure) {
     int enclosed = 0;
     for (int i = 0; i < 20000; i++) {
         double size = tu_log_uniform(&rng, -3, 3), flat = tu_log_uniform(&rng, -4, -3);
-        double rot[3][3];
-        tu_random_rotation(&rng, rot);
+        agjk_pose turn = tu_pose_identity();
+        tu_random_rotation(&rng, turn.rotation);
         agjk_vec3 local[4];
         double start = tu_uniform_range(&rng, 0.0, 6.283185307179586);
         for (int k = 0; k < 3; k++) {
@@ -825,13 +825,8 @@ START_TEST(gjk_thin_enclosure) {
                           flat * tu_uniform_range(&rng, 0.2, 1.0));
         int first = (int)tu_uniform_int(&rng, 4); /* which vertex comes last (the newest) */
         agjk_vec3 w[4];
-        for (int k = 0; k < 4; k++) {
-            agjk_vec3 v = local[(first + 1 + k) % 4];
-            w[k] = tu_scale(tu_vec(rot[0][0] * v.x + rot[0][1] * v.y + rot[0][2] * v.z,
-                                   rot[1][0] * v.x + rot[1][1] * v.y + rot[1][2] * v.z,
-                                   rot[2][0] * v.x + rot[2][1] * v.y + rot[2][2] * v.z),
-                            size);
-        }
+        for (int k = 0; k < 4; k++)
+            w[k] = tu_scale(tu_pose_rotate(&turn, local[(first + 1 + k) % 4]), size);
         double l[4], lo[4];
         agjk_vec3 p, po;
         unsigned mask = check_gjk(w, 4, "gjk thin enclosure", i, &counts, l, &p);
