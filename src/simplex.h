@@ -58,9 +58,9 @@ typedef struct agjk__projection_notes {
  * when that test found the origin inside (the mask then has
  * AGJK__INSIDE_REPORTED too, also when the tetrahedron was too thin for the
  * test's own weights and the exhaustive projection's are given; otherwise
- * it is not written, and the overlap certification does its own tests), and notes->turned with turned_valid
- * set to 1 when the point was turned (else turned_valid is left as it was:
- * the caller clears it). */
+ * it is not written, and the overlap certification does its own tests),
+ * and notes->turned with turned_valid set to 1 when the point was turned
+ * (else turned_valid is left as it was: the caller clears it). */
 unsigned agjk__simplex_project_gjk_noted(const agjk_vec3 *w, int n, double lambda[4],
                                          agjk_vec3 *point, agjk__projection_notes *notes);
 
