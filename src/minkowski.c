@@ -35,7 +35,19 @@ static int point_bounds(agjk_support_fn fn, const void *data, double *l1, double
     if (fn == agjk__ellipsoid_support) {
         /* |p_i| <= r_i for a support point D^2 d / ||D d||; computed, a few
          * ulps more, which the factor 1 + 2^-40 covers. */
-        if (!extents(((const agjk_ellipsoid *)data)->radii, 0, l1, max)) return 0;
+        agjk_vec3 r = ((const agjk_ellipsoid *)data)->radii;
+        if (!extents(r, 0, l1, max)) return 0;
+        /* Bounded also promises ||D d||^2 in range for every direction the
+         * support path lets through, which then skips its range test
+         * (agjk__ellipsoid_unnormalized_in_range): |d|^2 in [2^-120,
+         * 2^202] (max |d_i| in [AGJK__DIRECTION_MIN, AGJK__DIRECTION_MAX];
+         * B's direction turned from it has |d| to a few ulps) and radii in
+         * [2^-380, 2^340] keep it within [2^-880, 2^882]. A plate thinner
+         * than that, at the scale of 1, keeps the test (the point along its
+         * thin axis underflows: test_shapes, ellipsoid plates). */
+        double smallest = r.x < r.y ? r.x : r.y;
+        if (r.z < smallest) smallest = r.z;
+        if (!(smallest >= 0x1p-380 && *max <= 0x1p340)) return 0;
         *l1 *= 1.0 + 0x1p-40;
         *max *= 1.0 + 0x1p-40;
         return 1;

@@ -226,7 +226,13 @@ static AGJK__ALWAYS_INLINE agjk_vec3 agjk__shape_support(agjk__minkowski *md, ag
     } else if (fn == agjk__box_support) {
         return agjk__box_point((const agjk_box *)data, d);
     } else if (fn == agjk__ellipsoid_support) {
-        agjk_vec3 p;
+        agjk_vec3 p, q;
+        double inv;
+        if (direct == AGJK__SUPPORT_DIRECT_LOOP && md->bounded) {
+            /* (in range: agjk__minkowski_bound_points_from_data) */
+            agjk__ellipsoid_unnormalized_in_range((const agjk_ellipsoid *)data, d, &q, &inv);
+            return v3_scale(q, inv);
+        }
         if (agjk__ellipsoid_point((const agjk_ellipsoid *)data, d, &p)) return p;
     } else if (fn == agjk__point_support) {
         return v3(0.0, 0.0, 0.0);
@@ -361,13 +367,12 @@ static AGJK__ALWAYS_INLINE void agjk__minkowski_support(agjk__minkowski *md, agj
     if (direct == AGJK__SUPPORT_DIRECT_LOOP && md->bounded == AGJK__BOUNDED_ELLIPSOID_B) {
         agjk_vec3 q;
         double inv;
-        if (agjk__ellipsoid_unnormalized((const agjk_ellipsoid *)md->data_b, db, &q, &inv)) {
-            agjk_vec3 b = v3_add(v3_scale(m3_mul(&md->rotation[0][0], q), inv), md->translation);
-            out->b = b;
-            out->a = pa;
-            out->w = v3_sub(pa, b);
-            return;
-        }
+        agjk__ellipsoid_unnormalized_in_range((const agjk_ellipsoid *)md->data_b, db, &q, &inv);
+        agjk_vec3 b = v3_add(v3_scale(m3_mul(&md->rotation[0][0], q), inv), md->translation);
+        out->b = b;
+        out->a = pa;
+        out->w = v3_sub(pa, b);
+        return;
     }
 #endif
     agjk_vec3 q_first = v3(0.0, 0.0, 0.0);

@@ -506,6 +506,56 @@ START_TEST(direct_support_matches_callback) {
 }
 END_TEST
 
+/* Ellipsoids of ordinary size with one radius far below the others (a
+ * plate 1e-200 thick: the problem keeps the scale of 1): the support path
+ * skips the range test of ||D d||^2 only for radii that keep it in range
+ * (src/minkowski.c, point_bounds), since along the thin axis, exactly as
+ * axis-aligned poses give it, ||D d||^2 underflows to 0 and the point
+ * would come out NaN. The answer is the plate's analytic distance. */
+START_TEST(ellipsoid_plates_keep_the_range_test) {
+    const double thin[] = {1e-200, 1e-160, 1e-120};
+    const agjk_method methods[] = {AGJK_METHOD_GJK, AGJK_METHOD_ADAPTIVE, AGJK_METHOD_NESTEROV,
+                                   AGJK_METHOD_POLYAK};
+    int queries = 0;
+    for (int t = 0; t < 3; t++)
+        for (int axis = 0; axis < 3; axis++)
+            for (int swap = 0; swap < 2; swap++) {
+                agjk_ellipsoid plate, ball;
+                double r[3] = {0.8, 0.6, 0.7};
+                r[axis] = thin[t];
+                plate.radii = tu_vec(r[0], r[1], r[2]);
+                ball.radii = tu_vec(0.3, 0.25, 0.2);
+                agjk_shape sp, sb;
+                TU_CHECK_INT_EQ(agjk_shape_ellipsoid(&sp, &plate), AGJK_STATUS_OK);
+                TU_CHECK_INT_EQ(agjk_shape_ellipsoid(&sb, &ball), AGJK_STATUS_OK);
+                /* The ball beside the plate along its thin axis, 0.05 away. */
+                double ball_r[3] = {0.3, 0.25, 0.2}, off[3] = {0.0, 0.0, 0.0};
+                off[axis] = thin[t] + ball_r[axis] + 0.05;
+                agjk_pose pp = tu_pose_identity(), pb = tu_pose_identity();
+                pb.translation = tu_vec(off[0], off[1], off[2]);
+                for (int m = 0; m < 4; m++) {
+                    agjk_options o = agjk_default_options();
+                    o.method = methods[m];
+                    agjk_result res;
+                    agjk_status st = swap ? agjk_distance(&sb, &pb, &sp, &pp, &o, &res)
+                                          : agjk_distance(&sp, &pp, &sb, &pb, &o, &res);
+                    TU_ENSURE(st == AGJK_STATUS_SEPARATED && fabs(res.distance - 0.05) <= 1e-7 &&
+                                  res.distance - res.bound <= 0.05 + 1e-12,
+                              "plate %g axis %d swap %d method %d: status %d distance %.17g "
+                              "bound %g",
+                              thin[t], axis, swap, m, (int)st, res.distance, res.bound);
+                    st = swap ? agjk_collide(&sb, &pb, &sp, &pp, &o, &res)
+                              : agjk_collide(&sp, &pp, &sb, &pb, &o, &res);
+                    TU_ENSURE(st == AGJK_STATUS_SEPARATED,
+                              "plate %g axis %d swap %d method %d: Boolean status %d", thin[t],
+                              axis, swap, m, (int)st);
+                    queries += 2;
+                }
+            }
+    TU_CHECK(queries == 3 * 3 * 2 * 4 * 2);
+}
+END_TEST
+
 /* A random polytope on an ellipsoid, with its hull's adjacency when
  * `adjacency` (else scanned); n points. */
 static void pair_polytope(tu_rng *rng, agjk_polytope *poly, agjk_vec3 *verts, int32_t *tris,
@@ -594,6 +644,7 @@ int main(void) {
     Suite *s = suite_create("shapes");
     TU_ADD(s, builtin_shapes);
     TU_ADD(s, direct_support_matches_callback);
+    TU_ADD(s, ellipsoid_plates_keep_the_range_test);
     TU_ADD(s, constructors_reject_bad_sizes);
     TU_ADD(s, polytope_rejects_bad_vertices);
     TU_ADD(s, brute_hull_itself);
