@@ -932,8 +932,18 @@ static AGJK__ALWAYS_INLINE void solve(agjk__minkowski *md, const agjk__solve_inp
             double d2 = sv.x2;
             const agjk_vec3 *db = sv.notes.turned_valid ? &sv.notes.turned : NULL;
             if (sv.m.active) {
-                d = agjk__momentum_direction(&sv.m, k, sv.x);
-                d2 = 0.0;
+                /* A momentum direction whose |d|^2 lies in the support
+                 * path's safe range is non-zero and finite, which is all
+                 * that agjk__direction_or_gradient tests, and |d|^2 then
+                 * settles the support's own range test too: one test of
+                 * |d|^2 where there were two of |d|_1 and max |d_i| (the
+                 * same directions and bits). */
+                d = agjk__momentum_mix(&sv.m, k, sv.x);
+                d2 = v3_norm2(d);
+                if (!(d2 >= md->direction_floor2 && d2 <= AGJK__DIRECTION_NORM2_MAX)) {
+                    d = agjk__direction_or_gradient(d, sv.x);
+                    d2 = 0.0;
+                }
                 db = NULL;
             }
             support(&sv, &d, d2, &s, AGJK__SUPPORT_DIRECT_LOOP, db);

@@ -98,14 +98,15 @@ static inline agjk_vec3 agjk__direction_or_gradient(agjk_vec3 d, agjk_vec3 x) {
 agjk_vec3 agjk__momentum_direction_other(const agjk__momentum *m, int k, agjk_vec3 x);
 
 /* Support direction d_k for iterate x_k at iteration k while momentum is
- * active. Nesterov's and Polyak's mixes inline: a few operations, where the
- * call took 3% of a Nesterov query on overlapping ellipsoids. */
-static AGJK__ALWAYS_INLINE agjk_vec3 agjk__momentum_direction(const agjk__momentum *m, int k,
-                                                              agjk_vec3 x) {
-    if (m->method == AGJK_METHOD_NESTEROV)
-        return agjk__direction_or_gradient(agjk__nesterov_mix(m, k, x), x);
+ * active, before the test of agjk__direction_or_gradient, which the caller
+ * makes (see solve() in solver.c). Nesterov's and Polyak's mixes inline: a
+ * few operations, where the call took 3% of a Nesterov query on overlapping
+ * ellipsoids. */
+static AGJK__ALWAYS_INLINE agjk_vec3 agjk__momentum_mix(const agjk__momentum *m, int k,
+                                                        agjk_vec3 x) {
+    if (m->method == AGJK_METHOD_NESTEROV) return agjk__nesterov_mix(m, k, x);
     if (m->method == AGJK_METHOD_POLYAK)
-        return agjk__direction_or_gradient(agjk__polyak_mix(m, agjk__polyak_weight(k), x), x);
+        return agjk__polyak_mix(m, agjk__polyak_weight(k), x);
     return agjk__momentum_direction_other(m, k, x);
 }
 
