@@ -392,7 +392,7 @@ agjk_vec3 agjk__momentum_direction_other(const agjk__momentum *m, int k, agjk_ve
         d = x;
         break;
     }
-    return agjk__direction_or_gradient(d, x);
+    return d; /* (the caller tests it: agjk__momentum_mix) */
 }
 
 /* (solver.h: agjk__direction_or_gradient's rare case.) */

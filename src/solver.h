@@ -94,7 +94,8 @@ static inline agjk_vec3 agjk__direction_or_gradient(agjk_vec3 d, agjk_vec3 x) {
     return n1 > 0.0 && n1 <= DBL_MAX ? d : agjk__gradient_instead(x);
 }
 
-/* Normalised Nesterov and the adaptive rule (direction.c). */
+/* Normalised Nesterov and the adaptive rule (direction.c), untested as
+ * agjk__momentum_mix's. */
 agjk_vec3 agjk__momentum_direction_other(const agjk__momentum *m, int k, agjk_vec3 x);
 
 /* Support direction d_k for iterate x_k at iteration k while momentum is
