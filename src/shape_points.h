@@ -40,15 +40,15 @@ static inline agjk_vec3 agjk__segment_point(const agjk_capsule *c, agjk_vec3 d) 
 }
 
 /* Ellipsoid {p : sum (p_i / r_i)^2 <= 1}: its support value is ||D d||
- * with D = diag(r) (root2: its square), into *root when ||D d||^2 lies far
- * from underflow and overflow; returns 0, with nothing written, otherwise
- * (tiny or huge directions, stiff radii: shape_ellipsoid.c rescales
- * first). */
+ * with D = diag(r). Its square, unchecked: */
 static inline double agjk__ellipsoid_root2(const agjk_ellipsoid *e, agjk_vec3 d) {
     agjk_vec3 r = e->radii;
     double x = r.x * d.x, y = r.y * d.y, z = r.z * d.z; /* D d */
     return x * x + y * y + z * z;
 }
+/* ||D d|| itself into *root when ||D d||^2 lies far from underflow and
+ * overflow; returns 0, with nothing written, otherwise (tiny or huge
+ * directions, stiff radii: shape_ellipsoid.c rescales first). */
 static inline int agjk__ellipsoid_root(const agjk_ellipsoid *e, agjk_vec3 d, double *root) {
     double n2 = agjk__ellipsoid_root2(e, d);
     if (!(n2 >= 0x1p-900 && n2 <= 0x1p900)) return 0;
