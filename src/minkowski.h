@@ -119,6 +119,13 @@ static inline void agjk__minkowski_set_direction_min(agjk__minkowski *md, double
     md->direction_floor2 = 4.0 * dmin * dmin;
 }
 
+/* Whether a direction's computed squared norm d2 puts it in the support
+ * path's safe range (max |d_i| in [direction_min, AGJK__DIRECTION_MAX]);
+ * false for 0, NaN and Inf too. */
+static inline int agjk__minkowski_direction_safe(const agjk__minkowski *md, double d2) {
+    return d2 >= md->direction_floor2 && d2 <= AGJK__DIRECTION_NORM2_MAX;
+}
+
 static inline double agjk__minkowski_set_scale(agjk__minkowski *md) {
     double size = md->magnitude;
     if (md->translation_size > size) size = md->translation_size;
@@ -313,7 +320,7 @@ static AGJK__ALWAYS_INLINE void agjk__minkowski_support(agjk__minkowski *md, agj
      * d2 <= 2^198 gives max |d_i| <= |d| < 2^100. Otherwise (d2 = 0 when
      * unknown, or outside) the test on max |d_i| itself decides, as it
      * always did: the rescue runs exactly when it did. */
-    if (!(d2 >= md->direction_floor2 && d2 <= AGJK__DIRECTION_NORM2_MAX)) {
+    if (!agjk__minkowski_direction_safe(md, d2)) {
         double dm = v3_maxabs(d);
         if (!(dm >= md->direction_min && dm <= AGJK__DIRECTION_MAX)) {
             d = agjk__minkowski_rescue_direction(md, d);

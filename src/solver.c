@@ -940,7 +940,7 @@ static AGJK__ALWAYS_INLINE void solve(agjk__minkowski *md, const agjk__solve_inp
                  * same directions and bits). */
                 d = agjk__momentum_mix(&sv.m, k, sv.x);
                 d2 = v3_norm2(d);
-                if (!(d2 >= md->direction_floor2 && d2 <= AGJK__DIRECTION_NORM2_MAX)) {
+                if (!agjk__minkowski_direction_safe(md, d2)) {
                     d = agjk__direction_or_gradient(d, sv.x);
                     d2 = 0.0;
                 }
