@@ -233,13 +233,14 @@ static AGJK__ALWAYS_INLINE agjk_vec3 agjk__shape_support(agjk__minkowski *md, ag
     } else if (fn == agjk__box_support) {
         return agjk__box_point((const agjk_box *)data, d);
     } else if (fn == agjk__ellipsoid_support) {
-        agjk_vec3 p, q;
-        double inv;
         if (direct == AGJK__SUPPORT_DIRECT_LOOP && md->bounded) {
             /* (in range: agjk__minkowski_bound_points_from_data) */
+            agjk_vec3 q;
+            double inv;
             agjk__ellipsoid_unnormalized_in_range((const agjk_ellipsoid *)data, d, &q, &inv);
             return v3_scale(q, inv);
         }
+        agjk_vec3 p;
         if (agjk__ellipsoid_point((const agjk_ellipsoid *)data, d, &p)) return p;
     } else if (fn == agjk__point_support) {
         return v3(0.0, 0.0, 0.0);
