@@ -421,22 +421,28 @@ typedef struct {
     double det, li, lj, la;
 } gram_face;
 
-/* The candidate in a gram_face, from the caller's edge vectors e[i] =
- * w[i] - a and e[j]: the foot n <n, q> / |n|^2 from the normal n = e[i] x
- * e[j] and the vertex q = w[iq] (the error of <n, q> grows with |q|;
- * accurate even when the foot is much nearer the origin than a), if it
- * passes the KKT test for w[o]; the foot turned into B's frame too when
- * notes ask (agjk__projection_notes). Returns the support mask, or 0. Out
- * of line, with the face by reference: inlined, queries took 2-5% longer
- * (close and overlapping ellipsoids, boxes, hulls) for 7% fewer simplex
- * instructions; called with its vectors and weights as arguments, a quarter
- * of its instructions passed them through the stack. */
-static AGJK__NOINLINE unsigned face_output(const agjk_vec3 *w, const agjk_vec3 *e,
-                                           const gram_face *face, double lambda[4],
-                                           agjk_vec3 *point, agjk__projection_notes *notes) {
+/* The candidate in a gram_face: the foot n <n, q> / |n|^2 from the face's
+ * normal n = e[i] x e[j] (e[m] = w[m] - a) and the vertex q = w[iq] (the
+ * error of <n, q> grows with |q|; accurate even when the foot is much
+ * nearer the origin than a), if it passes the KKT test for w[o]; the foot
+ * turned into B's frame too when notes ask (agjk__projection_notes).
+ * Returns the support mask, or 0. Out of line, with the face by reference:
+ * inlined, queries took 2-5% longer (close and overlapping ellipsoids,
+ * boxes, hulls) for 7% fewer simplex instructions; called with its vectors
+ * and weights as arguments, a quarter of its instructions passed them
+ * through the stack. n and q, though, come as six doubles, in registers:
+ * the caller forms them from its edges, which it holds in registers, where
+ * reading the edges from memory here put a store-to-load round trip on
+ * GJK's chain of dependent steps (and two of them, read by one 16-byte
+ * load from two 8-byte stores, waited for the cache): close and
+ * overlapping ellipsoid queries 2-3% faster. */
+static AGJK__NOINLINE unsigned face_output(const agjk_vec3 *w, const gram_face *face,
+                                           double lambda[4], agjk_vec3 *point,
+                                           agjk__projection_notes *notes, double nx, double ny,
+                                           double nz, double qx, double qy, double qz) {
     int ia = face->n - 1, ib = face->i, ic = face->j;
-    agjk_vec3 nrm = v3_cross(e[ib], e[ic]);
-    double t = v3_dot(nrm, w[face->iq]) / v3_norm2(nrm);
+    agjk_vec3 nrm = v3(nx, ny, nz);
+    double t = v3_dot(nrm, v3(qx, qy, qz)) / v3_norm2(nrm);
     agjk_vec3 f = v3_scale(nrm, t);
     agjk_vec3 turned = v3(0.0, 0.0, 0.0);
     if (notes && notes->rotation) turned = v3_scale(m3_tmul(notes->rotation, nrm), t);
@@ -488,8 +494,11 @@ static unsigned gjk_triangle(const agjk_vec3 *w, int exhaustive, double lambda[4
         double db = 2.0 * ru + uu, dc = 2.0 * rv + vv;
         int iq = db < dc ? (db < 0.0 ? 0 : 2) : (dc < 0.0 ? 1 : 2);
         gram_face face = {3, 0, 1, iq, -1, det, lb, lc, la};
-        unsigned mask =
-            det > WELL_CONDITIONED * uu * vv ? face_output(w, e, &face, lambda, point, notes) : 0u;
+        agjk_vec3 nrm = v3_cross(u, v), q = iq == 2 ? a : w[iq];
+        unsigned mask = det > WELL_CONDITIONED * uu * vv
+                            ? face_output(w, &face, lambda, point, notes, nrm.x, nrm.y, nrm.z,
+                                          q.x, q.y, q.z)
+                            : 0u;
         return mask ? mask : decline(w, 3, exhaustive, lambda, point);
     }
     /* Outside the triangle: on its edges through a (the edge b-c belongs to
@@ -571,8 +580,13 @@ static unsigned tetra_inside(const agjk_vec3 *w, const agjk_vec3 *e, const doubl
                              double lambda[4], agjk_vec3 *point,
                              agjk__projection_notes *notes, int *thin) {
     agjk_vec3 a = w[3];
-    agjk_vec3 e0 = e[0], e1 = e[1], e2 = e[2];
-    double g00 = gd[0], g11 = gd[1], g22 = gd[2];
+    /* (Scalar loads: the caller has just stored e and gd 8 bytes at a time,
+     * and a 16-byte load of two of them waited for the cache: at the last
+     * step of every overlapping query, 0.5% of its time.) */
+    agjk_vec3 e0 = v3_load_scalars(&e[0]), e1 = v3_load_scalars(&e[1]);
+    agjk_vec3 e2 = v3_load_scalars(&e[2]);
+    const volatile double *gv = gd;
+    double g00 = gv[0], g11 = gv[1], g22 = gv[2];
     agjk_vec3 c12 = v3_cross(e1, e2), c20 = v3_cross(e2, e0), c01 = v3_cross(e0, e1);
     double vol = v3_dot(e0, c12);
     double n0 = -v3_dot(a, c12), n1 = -v3_dot(a, c20), n2 = -v3_dot(a, c01);
@@ -713,8 +727,14 @@ static unsigned gjk_tetrahedron(const agjk_vec3 *w, int exhaustive, double lambd
         /* The face through a that holds the answer; too thin for the Gram
          * weights, or its candidate failing the exact KKT test: the face's
          * own degeneracy-proof projection. */
-        if (face.det > WELL_CONDITIONED * gd[face.i] * gd[face.j])
-            mask = face_output(w, e, &face, lambda, point, notes);
+        if (face.det > WELL_CONDITIONED * gd[face.i] * gd[face.j]) {
+            agjk_vec3 nrm = k == 0   ? v3_cross(e[1], e[2])
+                            : k == 1 ? v3_cross(e[2], e[0])
+                                     : v3_cross(e[0], e[1]);
+            agjk_vec3 q = face.iq == 3 ? a : w[face.iq];
+            mask = face_output(w, &face, lambda, point, notes, nrm.x, nrm.y, nrm.z, q.x, q.y,
+                               q.z);
+        }
         if (!mask) mask = thin_face(w, 1 + k, lambda, point);
         return mask ? mask : decline(w, 4, exhaustive, lambda, point);
     }
