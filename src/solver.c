@@ -572,7 +572,11 @@ static agjk_vec3 member_point(const solver *sv) {
 
 /* Adds s to the active set and projects the origin onto its hull, keeping only
  * the vertices with positive weight (Alg. 4 line 7 / Alg. 5). Returns 1 when
- * the origin is enclosed by a full tetrahedron. */
+ * the origin is enclosed by a full tetrahedron. The weights go straight to
+ * sv->lambda (compacted in place below): copied from a local array when the
+ * origin was enclosed, two of them were read by one 16-byte load from two
+ * 8-byte stores, which waited for the cache at the end of every overlapping
+ * query. */
 static AGJK__ALWAYS_INLINE int update_simplex(solver *sv, const agjk__vertex *s, agjk_vec3 *x) {
     int n = sv->count;
     sv->w[n] = s->w;
@@ -581,12 +585,11 @@ static AGJK__ALWAYS_INLINE int update_simplex(solver *sv, const agjk__vertex *s,
         if (sv->keep_b) sv->b[n] = s->b;
     }
     ++n;
-    double l[4];
+    double *l = sv->lambda;
     sv->notes.turned_valid = 0;
     unsigned mask = agjk__simplex_project_gjk_noted(sv->w, n, l, x, &sv->notes);
     if ((mask & 0xFu) == 0xFu) {
         sv->inside_reported = (mask & AGJK__INSIDE_REPORTED) != 0;
-        for (int i = 0; i < 4; ++i) sv->lambda[i] = l[i];
         sv->count = 4;
         return 1;
     }
@@ -923,9 +926,14 @@ static AGJK__ALWAYS_INLINE void solve(agjk__minkowski *md, const agjk__solve_inp
     int stalled = 0;     /* consecutive iterations without progress */
     sv.sign_budget = SIGN_SEEK_ITERATIONS;
     sv.plain_next = 0;
+    /* x_k, the next plain direction, as a local: sv.x lives in memory (sv's
+     * address goes to many functions), and reading it back at the top of
+     * the loop put a store-to-load round trip on GJK's chain of dependent
+     * steps (close and overlapping ellipsoids 1.5% faster). */
+    agjk_vec3 x_dir = sv.x;
     for (int k = 0; k < in->max_iterations; ++k) {
         out->iterations = k + 1;
-        agjk_vec3 d = k == 0 ? d0 : sv.x;
+        agjk_vec3 d = k == 0 ? d0 : x_dir;
         if (k > 0) {
             /* A plain step's direction is x itself, whose |x|^2 is known,
              * and R^T x too when the projection turned it (a face). */
@@ -938,7 +946,7 @@ static AGJK__ALWAYS_INLINE void solve(agjk__minkowski *md, const agjk__solve_inp
                  * settles the support's own range test too: one test of
                  * |d|^2 where there were two of |d|_1 and max |d_i| (the
                  * same directions and bits). */
-                d = agjk__momentum_mix(&sv.m, k, sv.x);
+                d = agjk__momentum_mix(&sv.m, k, x_dir);
                 d2 = v3_norm2(d);
                 if (!agjk__minkowski_direction_safe(md, d2)) {
                     d = agjk__direction_or_gradient(d, sv.x);
@@ -1045,6 +1053,7 @@ static AGJK__ALWAYS_INLINE void solve(agjk__minkowski *md, const agjk__solve_inp
         double x_new2 = v3_norm2(x_new);
         int no_progress = have_x && !enclosed && x_new2 >= sv.x2;
         sv.x = x_new;
+        x_dir = x_new;
         sv.x2 = x_new2;
         have_x = 1;
         out->gap_valid = 0;
