@@ -121,7 +121,7 @@ static void follow_rescale(epa_state *st) {
 static AGJK__ALWAYS_INLINE int support(epa_state *st, agjk_vec3 n, agjk__vertex *s,
                                        double *h_out) {
     /* argmin <-n, .> */
-    agjk__minkowski_support(st->md, v3_neg(n), 0.0, s, AGJK__SUPPORT_DIRECT, NULL, 0.0, 0.0);
+    agjk__minkowski_support(st->md, v3_neg(n), 0.0, s, AGJK__SUPPORT_DIRECT, NULL, 0.0, 0.0, NULL);
     ++st->support_calls;
     if (st->md->bad_support) return 0;
     if (st->md->rescaled != 1.0) follow_rescale(st);

@@ -86,10 +86,16 @@ static AGJK__NOINLINE AGJK__COLD void follow_rescale(solver *sv, agjk_vec3 *d) {
  * if known, else 0, and db = R^T d if known, else NULL (see
  * agjk__minkowski_support): inline for the loop's own call, out of line for
  * the rare ones (momentum switch-off, final certification), so that the
- * support path is expanded once. */
+ * support path is expanded once. s->w also goes to the simplex's next slot,
+ * sv->w[sv->count], from the registers that formed it: copied there from s
+ * by update_simplex, it went through memory twice on GJK's chain of
+ * dependent steps (s's store forwarded to a load, the slot's to the
+ * projection's), as the support path's several exits join before the copy
+ * (close and overlapping ellipsoids 1-2% faster). */
 static AGJK__ALWAYS_INLINE void support(solver *sv, agjk_vec3 *d, double d2, agjk__vertex *s,
                                         int direct, const agjk_vec3 *db) {
-    agjk__minkowski_support(sv->md, *d, d2, s, direct, db, 0.0, 0.0);
+    agjk__minkowski_support(sv->md, *d, d2, s, direct, db, 0.0, 0.0,
+                            sv->count < 4 ? &sv->w[sv->count] : NULL);
     if (sv->md->rescaled != 1.0) follow_rescale(sv, d);
 }
 static AGJK__NOINLINE void support_rare(solver *sv, agjk_vec3 *d, agjk__vertex *s) {
@@ -572,14 +578,16 @@ static agjk_vec3 member_point(const solver *sv) {
 
 /* Adds s to the active set and projects the origin onto its hull, keeping only
  * the vertices with positive weight (Alg. 4 line 7 / Alg. 5). Returns 1 when
- * the origin is enclosed by a full tetrahedron. The weights go straight to
- * sv->lambda (compacted in place below): copied from a local array when the
- * origin was enclosed, two of them were read by one 16-byte load from two
- * 8-byte stores, which waited for the cache at the end of every overlapping
+ * the origin is enclosed by a full tetrahedron. in_slot: support() has put
+ * s->w in sv->w[sv->count] already. The weights go straight to sv->lambda
+ * (compacted in place below): copied from a local array when the origin
+ * was enclosed, two of them were read by one 16-byte load from two 8-byte
+ * stores, which waited for the cache at the end of every overlapping
  * query. */
-static AGJK__ALWAYS_INLINE int update_simplex(solver *sv, const agjk__vertex *s, agjk_vec3 *x) {
+static AGJK__ALWAYS_INLINE int update_simplex(solver *sv, const agjk__vertex *s, int in_slot,
+                                              agjk_vec3 *x) {
     int n = sv->count;
-    sv->w[n] = s->w;
+    if (!in_slot) sv->w[n] = s->w;
     if (sv->keep_a) {
         sv->a[n] = s->a;
         if (sv->keep_b) sv->b[n] = s->b;
@@ -934,6 +942,7 @@ static AGJK__ALWAYS_INLINE void solve(agjk__minkowski *md, const agjk__solve_inp
     for (int k = 0; k < in->max_iterations; ++k) {
         out->iterations = k + 1;
         agjk_vec3 d = k == 0 ? d0 : x_dir;
+        int in_slot = k > 0; /* support() puts s.w in sv.w[sv.count] */
         if (k > 0) {
             /* A plain step's direction is x itself, whose |x|^2 is known,
              * and R^T x too when the projection turned it (a face). */
@@ -976,6 +985,7 @@ static AGJK__ALWAYS_INLINE void solve(agjk__minkowski *md, const agjk__solve_inp
              * stale: go on cold from this support (cache.c). */
             if (!warm_consistent(sv.w, sv.count, d, &s, md->noise)) {
                 sv.count = 0;
+                in_slot = 0;
                 have_x = 0;
                 warm = warm_enclosed = 0;
             }
@@ -989,6 +999,7 @@ static AGJK__ALWAYS_INLINE void solve(agjk__minkowski *md, const agjk__solve_inp
                 }
                 /* Not deep enough to certify: on cold from this support. */
                 sv.count = 0;
+                in_slot = 0;
                 have_x = 0;
                 warm = warm_enclosed = 0;
             }
@@ -1048,7 +1059,7 @@ static AGJK__ALWAYS_INLINE void solve(agjk__minkowski *md, const agjk__solve_inp
             update_frank_wolfe(&sv, &s, &x_new);
             enclosed = v3_norm2(x_new) == 0.0;
         } else {
-            enclosed = update_simplex(&sv, &s, &x_new);
+            enclosed = update_simplex(&sv, &s, in_slot, &x_new);
         }
         double x_new2 = v3_norm2(x_new);
         int no_progress = have_x && !enclosed && x_new2 >= sv.x2;

@@ -371,7 +371,7 @@ static AGJK__ALWAYS_INLINE int agjk__first_support(agjk__minkowski *md,
         unit = v3_scale_to_unit(along, v3_maxabs(along));
     }
     agjk__minkowski_support(md, unit, 0.0, s, AGJK__SUPPORT_DIRECT_FIRST, db_given ? &db : NULL,
-                            root_a, root_b);
+                            root_a, root_b, NULL);
     /* A shrink during that first call already put s in new units; x_0, given
      * in the caller's units, needs it too. */
     double shrunk = md->rescaled;

@@ -599,7 +599,7 @@ START_TEST(four_point_starts) {
         for (int i = 0; i < 8; ++i)
             agjk__minkowski_support(&md, v3(i & 1 ? 1.0 : -1.0, i & 2 ? 1.0 : -1.0,
                                             i & 4 ? 1.0 : -1.0),
-                                    0.0, &corner[i], AGJK__SUPPORT_CALL, NULL, 0.0, 0.0);
+                                    0.0, &corner[i], AGJK__SUPPORT_CALL, NULL, 0.0, 0.0, NULL);
         agjk__vertex sx[4];
         if (kind == 0) { /* the face of D at the largest x: coplanar */
             sx[0] = corner[0];
