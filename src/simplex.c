@@ -478,9 +478,9 @@ static unsigned gjk_segment(const agjk_vec3 *w, int exhaustive, double lambda[4]
     return 3u;
 }
 
-static unsigned gjk_triangle(const agjk_vec3 *w, int exhaustive, double lambda[4],
-                             agjk_vec3 *point, agjk__projection_notes *notes) {
-    agjk_vec3 a = w[2], e[2];
+static unsigned gjk_triangle(const agjk_vec3 *w, const agjk_vec3 *newest, int exhaustive,
+                             double lambda[4], agjk_vec3 *point, agjk__projection_notes *notes) {
+    agjk_vec3 a = *newest, e[2];
     e[0] = v3_sub(w[0], a);
     e[1] = v3_sub(w[1], a);
     agjk_vec3 u = e[0], v = e[1];
@@ -666,9 +666,10 @@ static unsigned thin_face(const agjk_vec3 *w, int taken, double lambda[4], agjk_
     return mask;
 }
 
-static unsigned gjk_tetrahedron(const agjk_vec3 *w, int exhaustive, double lambda[4],
-                                agjk_vec3 *point, agjk__projection_notes *notes) {
-    agjk_vec3 a = w[3];
+static unsigned gjk_tetrahedron(const agjk_vec3 *w, const agjk_vec3 *newest, int exhaustive,
+                                double lambda[4], agjk_vec3 *point,
+                                agjk__projection_notes *notes) {
+    agjk_vec3 a = *newest;
     agjk_vec3 e[3];
     e[0] = v3_sub(w[0], a);
     e[1] = v3_sub(w[1], a);
@@ -756,22 +757,23 @@ unsigned agjk__simplex_project_gjk_fast(const agjk_vec3 *w, int n, double lambda
     switch (n) {
     case 1: return vertex_output(w, 1, lambda, point);
     case 2: return gjk_segment(w, 0, lambda, point);
-    case 3: return gjk_triangle(w, 0, lambda, point, NULL);
-    default: return gjk_tetrahedron(w, 0, lambda, point, NULL);
+    case 3: return gjk_triangle(w, &w[2], 0, lambda, point, NULL);
+    default: return gjk_tetrahedron(w, &w[3], 0, lambda, point, NULL);
     }
 }
 
 AGJK__HOT_ENTRY unsigned agjk__simplex_project_gjk_noted(const agjk_vec3 *w, int n, double lambda[4],
-                                         agjk_vec3 *point, agjk__projection_notes *notes) {
+                                         agjk_vec3 *point, agjk__projection_notes *notes,
+                                         const agjk_vec3 *newest) {
     /* Largest first: a tetrahedron is the usual case on curved shapes. */
-    if (n >= 4) return gjk_tetrahedron(w, 1, lambda, point, notes);
-    if (n == 3) return gjk_triangle(w, 1, lambda, point, notes);
+    if (n >= 4) return gjk_tetrahedron(w, newest, 1, lambda, point, notes);
+    if (n == 3) return gjk_triangle(w, newest, 1, lambda, point, notes);
     if (n == 2) return gjk_segment(w, 1, lambda, point);
     return vertex_output(w, 1, lambda, point);
 }
 
 unsigned agjk__simplex_project_gjk(const agjk_vec3 *w, int n, double lambda[4], agjk_vec3 *point) {
-    return agjk__simplex_project_gjk_noted(w, n, lambda, point, NULL);
+    return agjk__simplex_project_gjk_noted(w, n, lambda, point, NULL, &w[n - 1]);
 }
 
 agjk_status agjk_simplex_project_origin(const agjk_vec3 *vertices, int count,

@@ -60,9 +60,12 @@ typedef struct agjk__projection_notes {
  * test's own weights and the exhaustive projection's are given; otherwise
  * it is not written, and the overlap certification does its own tests),
  * and notes->turned with turned_valid set to 1 when the point was turned
- * (else turned_valid is left as it was: the caller clears it). */
+ * (else turned_valid is left as it was: the caller clears it). `newest`
+ * holds w[n-1]'s value, where the caller has it (its fast path reads the
+ * new point from there). */
 unsigned agjk__simplex_project_gjk_noted(const agjk_vec3 *w, int n, double lambda[4],
-                                         agjk_vec3 *point, agjk__projection_notes *notes);
+                                         agjk_vec3 *point, agjk__projection_notes *notes,
+                                         const agjk_vec3 *newest);
 
 /* The fast path of agjk__simplex_project_gjk alone: the same output when it
  * finds a candidate that passes the optimality check, else 0 with lambda and

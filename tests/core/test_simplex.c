@@ -374,7 +374,7 @@ static void check_inside(const agjk_vec3 *w, unsigned mask, const double l[4], c
     const agjk__inside *inside = &notes.inside;
     double li[4];
     agjk_vec3 pi;
-    unsigned mi = agjk__simplex_project_gjk_noted(w, 4, li, &pi, &notes);
+    unsigned mi = agjk__simplex_project_gjk_noted(w, 4, li, &pi, &notes, &w[3]);
     TU_ENSURE((mi & ~AGJK__INSIDE_REPORTED) == mask && memcmp(li, l, sizeof li) == 0,
               "%s %d: the inside variant answers mask 0x%x, plain 0x%x", what, i, mi, mask);
     if (!(mi & AGJK__INSIDE_REPORTED)) return;
@@ -410,7 +410,7 @@ static void check_turned(const agjk_vec3 *w, int n, unsigned mask, const double 
     notes.turned_valid = 0;
     double lt[4] = {NAN, NAN, NAN, NAN}; /* (as check_gjk's: entries past n may stay) */
     agjk_vec3 pt;
-    unsigned mt = agjk__simplex_project_gjk_noted(w, n, lt, &pt, &notes);
+    unsigned mt = agjk__simplex_project_gjk_noted(w, n, lt, &pt, &notes, &w[n - 1]);
     TU_ENSURE((mt & ~AGJK__INSIDE_REPORTED) == mask && memcmp(lt, l, sizeof lt) == 0 &&
                   memcmp(&pt, &p, sizeof p) == 0,
               "%s %d: the answer changed when the point was turned too", what, i);
