@@ -435,7 +435,8 @@ typedef struct {
  * reading the edges from memory here put a store-to-load round trip on
  * GJK's chain of dependent steps (and two of them, read by one 16-byte
  * load from two 8-byte stores, waited for the cache): close and
- * overlapping ellipsoid queries 2-3% faster. */
+ * overlapping ellipsoid queries 3% faster than so, 1.5% faster than with
+ * the edges read by 8-byte loads. */
 static AGJK__NOINLINE unsigned face_output(const agjk_vec3 *w, const gram_face *face,
                                            double lambda[4], agjk_vec3 *point,
                                            agjk__projection_notes *notes, double nx, double ny,

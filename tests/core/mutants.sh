@@ -37,7 +37,7 @@ gjk-projection-kkt-ignored|src/simplex.c|s/return m >= 0.0 || m \* m <= OPTIMALI
 gjk-projection-inside-unchecked|src/simplex.c|s/na > DEGENERATE_RELATIVE \* (vol + n0 + n1 + n2)/na > -vol/
 gjk-projection-vertex-early|src/simplex.c|s/if (r\[0\] >= 0.0 \&\& r\[1\] >= 0.0 \&\& r\[2\] >= 0.0) return vertex_output/if (r[0] >= 0.0 \&\& r[1] >= 0.0) return vertex_output/
 gjk-projection-thin-face|src/simplex.c|s/#define WELL_CONDITIONED 1e-2/#define WELL_CONDITIONED 0.0/
-gjk-projection-foot-from-newest|src/simplex.c|s/v3_dot(nrm, w\[face->iq\])/v3_dot(nrm, w[ia])/
+gjk-projection-foot-from-newest|src/simplex.c|s/agjk_vec3 q = face.iq == 3 ? a : w\[face.iq\];/agjk_vec3 q = a;/
 gjk-projection-edge-weight-by-difference|src/simplex.c|s/double s = v3_dot(b, u) \/ uu;/double s = 1.0 - (1.0 - v3_dot(b, u) \/ uu);/
 ellipsoids-apart-without-allowance|src/solver.h|s/double r = md->margin + 128.0 \* DBL_EPSILON \* size;/double r = md->margin;/
 '
