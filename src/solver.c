@@ -593,9 +593,17 @@ static AGJK__ALWAYS_INLINE int update_simplex(solver *sv, const agjk__vertex *s,
         sv->a[n] = s->a;
         if (sv->keep_b) sv->b[n] = s->b;
     }
+    sv->notes.turned_valid = 0;
+    if (n == 0) {
+        /* One point, its own projection (every cold query's first
+         * iteration): no call, and x straight from the support. */
+        sv->lambda[0] = 1.0;
+        *x = s->w;
+        sv->count = 1;
+        return 0;
+    }
     ++n;
     double *l = sv->lambda;
-    sv->notes.turned_valid = 0;
     unsigned mask = agjk__simplex_project_gjk_noted(sv->w, n, l, x, &sv->notes, &s->w);
     if ((mask & 0xFu) == 0xFu) {
         sv->inside_reported = (mask & AGJK__INSIDE_REPORTED) != 0;
