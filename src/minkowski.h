@@ -385,11 +385,12 @@ static AGJK__ALWAYS_INLINE int agjk__minkowski_support(agjk__minkowski *md, agjk
         double inv;
         agjk__ellipsoid_unnormalized_in_range((const agjk_ellipsoid *)md->data_b, db, &q, &inv);
         agjk_vec3 b = v3_add(v3_scale(m3_mul(&md->rotation[0][0], q), inv), md->translation);
+        agjk_vec3 w = v3_sub(pa, b);
         out->b = b;
         out->a = pa;
-        out->w = v3_sub(pa, b);
+        out->w = w;
         if (!slot) return 0;
-        *slot = v3_sub(pa, b);
+        *slot = w;
         return 1;
     }
 #endif
