@@ -54,6 +54,11 @@ typedef struct solver {
     int sign_budget;      /* iterations left to decide the sign after the tolerance */
     int plain_next;       /* plain steps from the next iteration (sign_pending, or a
                            * retried support) */
+    /* Plain Frank-Wolfe only: a bound on how far its iterate, carried from
+     * step to step as one computed point, may have drifted from the exact
+     * convex combination of support points it stands for (update_frank_wolfe);
+     * 0 for the other methods, whose active set holds support points. */
+    double drift;
 } solver;
 
 /* After a support that had to lower the scale (agjk__minkowski_points_slow),
@@ -70,6 +75,7 @@ static AGJK__NOINLINE AGJK__COLD void follow_rescale(solver *sv, agjk_vec3 *d) {
     }
     sv->x = v3_scale(sv->x, f);
     sv->x2 = v3_norm2(sv->x);
+    sv->drift *= f;
     sv->notes.turned_valid = 0; /* (x changed units) */
     /* The direction the support just used: scaled with the rest, unless that
      * would push it below DIRECTION_MIN, where it would start to lose bits
@@ -637,10 +643,25 @@ static AGJK__ALWAYS_INLINE int update_simplex(solver *sv, const agjk__vertex *s,
     return 0;
 }
 
+/* What one Frank-Wolfe step's rounding may move its iterate by, in units of
+ * eps (max |x_k| + max |s_k|): the segment foot (1 - t) b + t a, t and 1 - t
+ * each rounded, is within about 3 eps (|a| + |b|) of the exact combination
+ * with the computed t, and its cleanup along the segment (segment_cleanup)
+ * moves it no farther from the segment's exact foot; the 2-norms are at most
+ * sqrt(3) times the max norms. */
+#define FW_STEP_ROUNDING 8.0
+
 /* Plain Frank-Wolfe with exact line search (Alg. 1): the active set is the
  * iterate itself, stored as one vertex whose a, b accumulate the convex
- * combination so that witness points stay available. */
-static void update_frank_wolfe(solver *sv, const agjk__vertex *s, agjk_vec3 *x) {
+ * combination so that witness points stay available. That vertex is a
+ * computed point, not a support point: each step rounds it anew, hundreds of
+ * steps add up (a box and a sphere 3.3e-16 apart were once certified as
+ * intersecting through the margins, and a distance came out below the true
+ * one), so sv->drift bounds the sum and widens every bound that x serves as
+ * a point of D for. A step that lands on the support point itself starts it
+ * again from 0. Out of line: Frank-Wolfe is the paper's baseline, and its
+ * step only made the loop's two copies larger. */
+static AGJK__NOINLINE void update_frank_wolfe(solver *sv, const agjk__vertex *s, agjk_vec3 *x) {
     if (sv->count == 0) {
         sv->w[0] = s->w;
         if (sv->keep_a) {
@@ -655,6 +676,10 @@ static void update_frank_wolfe(solver *sv, const agjk__vertex *s, agjk_vec3 *x) 
             sv->a[0] = v3_lerp2(sv->a[0], l[0], s->a, l[1]);
             sv->b[0] = v3_lerp2(sv->b[0], l[0], s->b, l[1]);
         }
+        if (x->x == s->w.x && x->y == s->w.y && x->z == s->w.z)
+            sv->drift = 0.0;
+        else
+            sv->drift += FW_STEP_ROUNDING * DBL_EPSILON * (v3_maxabs(w[0]) + v3_maxabs(s->w));
         sv->w[0] = *x;
     }
     sv->count = 1;
@@ -818,7 +843,7 @@ static void finish(const solver *sv, agjk__solve_output *out) {
     /* sum lambda_i w_i, for the member point and B's witness point alike */
     agjk_vec3 p = member || b_from_a ? active_combination(sv) : v3(0.0, 0.0, 0.0);
     out->x_member = member ? member_point_from(sv, p) : sv->x;
-    out->noise = sv->md->noise;
+    out->noise = sv->md->noise + sv->drift;
     agjk_vec3 a = v3(0.0, 0.0, 0.0), b = v3(0.0, 0.0, 0.0);
     if (in->want_witness) {
         /* B's: sum lambda_i (a_i - w_i), each a_i - w_i being b_i to the
@@ -869,6 +894,7 @@ static AGJK__ALWAYS_INLINE void solve(agjk__minkowski *md, const agjk__solve_inp
     sv.md = md;
     sv.in = in;
     sv.count = 0;
+    sv.drift = 0.0;
     sv.notes.rotation = &md->rotation[0][0];
     sv.notes.turned_valid = 0;
 
@@ -1106,7 +1132,7 @@ static AGJK__ALWAYS_INLINE void solve(agjk__minkowski *md, const agjk__solve_inp
         int margins_overlap = 0;
         if (margin > noise && (at_origin || x_new2 < (margin - noise) * (margin - noise))) {
             double m = v3_norm(member_point(&sv));
-            double bound = (at_origin && m < 2.0 * noise ? 2.0 * noise : m) + noise;
+            double bound = (at_origin && m < 2.0 * noise ? 2.0 * noise : m) + noise + sv.drift;
             margins_overlap = bound < margin;
         }
         if (core_overlap || margins_overlap) {

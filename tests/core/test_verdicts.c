@@ -17,7 +17,13 @@
  *   creeps on triangles past the origin until the sign-seeking budget runs
  *   out (coherent-motion benchmark, fast ellipsoids, pair 6, step 63): the
  *   cold query certifies the overlap, as the warm-started ones do, instead
- *   of answering contact within tolerance. */
+ *   of answering contact within tolerance;
+ * - plain Frank-Wolfe, whose iterate is one computed point carried over
+ *   hundreds of steps, certifies neither an overlap nor a distance bound
+ *   that its accumulated rounding has moved past the exact distance (a box
+ *   and a sphere 3.3e-16 apart, two boxes 71 apart after 200 steps, a cube
+ *   and a sphere: exact distances in long double, where each difference of
+ *   these doubles is exact). */
 #include <float.h>
 #include <math.h>
 #include <stdio.h>
@@ -419,6 +425,71 @@ START_TEST(shallow_overlap_decided_cold) {
 }
 END_TEST
 
+/* The exact distance must lie in the certified interval [distance - bound,
+ * distance] (any status but intersecting, which must not come). */
+static void check_holds(const char *what, const agjk_result *r, long double exact) {
+    TU_ENSURE(r->status != AGJK_STATUS_INTERSECTING && r->status != AGJK_STATUS_INVALID_INPUT,
+              "%s: status %s", what, agjk_status_string(r->status));
+    TU_ENSURE((long double)r->distance >= exact &&
+                  (long double)r->distance - (long double)r->bound <= exact,
+              "%s: exact %.21Lg outside [%.21g, %.21g] (%s, %d iterations)", what, exact,
+              r->distance - r->bound, r->distance, agjk_status_string(r->status), r->iterations);
+}
+
+START_TEST(frank_wolfe_drift_bounded) {
+    agjk_options o = agjk_default_options();
+    o.method = AGJK_METHOD_FRANK_WOLFE;
+    agjk_pose id = tu_pose_identity(), pb = id;
+    agjk_shape sa, sb;
+    agjk_result r;
+    /* A sphere over a box's +y face, 3.3e-16 apart: Frank-Wolfe once ended
+     * "intersecting" through the margin (its drifted iterate ||x|| + noise
+     * below the radius), from agjk_distance and agjk_collide alike. */
+    agjk_box box = {{0x1.29655d3bfba09p-3, 0x1.8f04f574434e3p-1, 0x1.82e8b2cd60c8p-2}};
+    double radius = 0x1.67298cdf3a1f1p+0;
+    TU_CHECK_INT_EQ(agjk_shape_box(&sa, &box), AGJK_STATUS_OK);
+    TU_CHECK_INT_EQ(agjk_shape_sphere(&sb, radius), AGJK_STATUS_OK);
+    pb.translation = tu_vec(0x1.c9f7ed7d21e7ep-5, 0x1.175603ccade32p+1, -0x1.72b83e17d03f2p-2);
+    long double exact = (long double)pb.translation.y - box.half_extents.y - radius;
+    ck_assert(exact > 0.0L);
+    double tolerances[2] = {1e-8, 1e-300};
+    for (int k = 0; k < 2; ++k) {
+        o.tolerance = tolerances[k];
+        agjk_distance(&sa, &id, &sb, &pb, &o, &r);
+        check_holds("box and sphere, distance", &r, exact);
+        agjk_collide(&sa, &id, &sb, &pb, &o, &r);
+        TU_ENSURE(r.status != AGJK_STATUS_INTERSECTING, "box and sphere, collide: intersecting");
+    }
+    /* Two boxes 71 apart along y, 200 steps: the upper end came out 2.4e-14
+     * below the exact distance (the rounding allowance being 6.5e-14 /
+     * 2). */
+    agjk_box ba = {{0x1.856fd78ed5da8p-3, 0x1.789e039cce9b8p-3, 0x1.daafa04b8650fp-1}};
+    agjk_box bb = {{0x1.0cbb8afeef3bbp-1, 0x1.9ecd002142474p-2, 0x1.083d27365af2p-2}};
+    TU_CHECK_INT_EQ(agjk_shape_box(&sa, &ba), AGJK_STATUS_OK);
+    TU_CHECK_INT_EQ(agjk_shape_box(&sb, &bb), AGJK_STATUS_OK);
+    pb.translation = tu_vec(0x1.264402ea1e175p-1, -0x1.1f58443cf12ap+6, -0x1.7fabb15698ac4p-1);
+    o.tolerance = 1e-8;
+    o.max_iterations = 200;
+    agjk_distance(&sa, &id, &sb, &pb, &o, &r);
+    check_holds("two boxes",
+                &r, -(long double)pb.translation.y - ba.half_extents.y - bb.half_extents.y);
+    /* A cube given as 8 points and a sphere above its +z face. */
+    double hx = 0x1.2bb63537b1da3p-7, hy = 0x1.ed5691fc88db4p-6, hz = 0x1.d09144609cb7dp-6;
+    agjk_vec3 v[8];
+    for (int i = 0; i < 8; i++)
+        v[i] = tu_vec((i & 1) ? hx : -hx, (i & 2) ? hy : -hy, (i & 4) ? hz : -hz);
+    agjk_polytope cube = {v, 8, NULL, NULL};
+    double rad = 0x1.024884ed0a058p-8;
+    TU_CHECK_INT_EQ(agjk_shape_polytope(&sa, &cube), AGJK_STATUS_OK);
+    TU_CHECK_INT_EQ(agjk_shape_sphere(&sb, rad), AGJK_STATUS_OK);
+    pb.translation = tu_vec(-0x1.2aea77455399bp-8, 0x1.07639b99fe95cp-7, 0x1.74c48f8c5317ap+1);
+    o.tolerance = 1e-300;
+    o.max_iterations = 1000;
+    agjk_distance(&sa, &id, &sb, &pb, &o, &r);
+    check_holds("cube and sphere", &r, (long double)pb.translation.z - hz - rad);
+}
+END_TEST
+
 int main(void) {
     Suite *s = suite_create("verdicts");
     TU_ADD(s, point_facing_cube_face);
@@ -427,5 +498,6 @@ int main(void) {
     TU_ADD(s, needles_get_no_false_overlap);
     TU_ADD(s, point_beside_ellipsoid_needle);
     TU_ADD(s, shallow_overlap_decided_cold);
+    TU_ADD(s, frank_wolfe_drift_bounded);
     return tu_run_suite(s);
 }
