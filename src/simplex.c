@@ -98,6 +98,13 @@ static void keep_best(candidate *best, unsigned mask, const double lambda[4], ag
     }
 }
 
+/* How far a triangle's weights may put their combination from the foot they
+ * stand for, in ulps of the largest vertex: usually a few, as much as the
+ * foot's own worst case (SLIVER_ULPS, whose triangles keep their foot) on
+ * thin ones; a sliver's cancelled weights are off by a fraction of the
+ * triangle. */
+#define WEIGHTS_ULPS SLIVER_ULPS
+
 /* The exhaustive paths are cold since the GJK fast path decides almost every
  * call (agjk__simplex_project_gjk): compiled for size. */
 static AGJK__COLD unsigned project_triangle(const agjk_vec3 *p, int n, int i, int j, int k,
@@ -157,12 +164,25 @@ static AGJK__COLD unsigned project_triangle(const agjk_vec3 *p, int n, int i, in
         double lc = v3_dot(nrm, v3_cross(fa, fb));
         double sum = la + lb + lc;
         if (la > 0.0 && lb > 0.0 && lc > 0.0 && sum > 0.0) {
-            for (int q = 0; q < n; ++q) lambda[q] = 0.0;
-            lambda[i] = la / sum;
-            lambda[j] = lb / sum;
-            lambda[k] = lc / sum;
-            *point = foot;
-            return (1u << i) | (1u << j) | (1u << k);
+            double wa = la / sum, wb = lb / sum, wc = lc / sum;
+            /* The weights must give the foot back. On a sliver (two
+             * vertices a few ulps apart, the third far off) the plane and
+             * the foot are right while the signed areas cancel: weights off
+             * by tens of percent, whose combination missed the foot by 3% of
+             * the triangle. The edges decide then (below), each a
+             * well-conditioned segment whose foot lies within the sliver's
+             * width of this one. */
+            agjk_vec3 back = v3_add(v3_add(v3_scale(a, wa), v3_scale(b, wb)), v3_scale(c, wc));
+            double limit = WEIGHTS_ULPS * DBL_EPSILON;
+            if (v3_norm2(v3_sub(back, foot)) <= limit * limit * far) {
+                for (int q = 0; q < n; ++q) lambda[q] = 0.0;
+                lambda[i] = wa;
+                lambda[j] = wb;
+                lambda[k] = wc;
+                *point = foot;
+                return (1u << i) | (1u << j) | (1u << k);
+            }
+            la = lb = lc = -1.0; /* every edge */
         }
         edge_sign[0] = la;
         edge_sign[1] = lb;

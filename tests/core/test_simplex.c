@@ -200,6 +200,18 @@ START_TEST(degenerate) {
     TU_CHECK(fabs(pj.point.x) + fabs(pj.point.y) < 1e-15 && fabs(pj.point.z - 1.0) < 1e-15);
     check_projection(plane, 4, "exact plane", 0, &pj, &ref);
     TU_CHECK(fabs(pj.point.x) + fabs(pj.point.y) < 1e-15 && fabs(pj.point.z - 2.0) < 1e-15);
+    /* A sliver: two vertices a few ulps apart, the third far off, the foot
+     * inside (GJK's last triangle on a cylinder's cap). The signed areas
+     * cancelled: weights 7/11, 3/11, 1/11 whose combination missed the foot
+     * by 3% of the triangle. Every order of the vertices. */
+    const agjk_vec3 sliver[3] = {
+        {1.5969424491823374e-05, -5.5182442305461999e-05, -5.8207660927019934e-11},
+        {-3.1484437511463411e-05, 0.00010879466303784628, -5.8207660927019934e-11},
+        {-3.1484437511463431e-05, 0.00010879466303784625, -5.8207660927019934e-11}};
+    for (int r = 0; r < 3; r++) {
+        agjk_vec3 w[3] = {sliver[r], sliver[(r + 1) % 3], sliver[(r + 2) % 3]};
+        check_projection(w, 3, "sliver", r, &pj, &ref);
+    }
 }
 END_TEST
 
