@@ -73,6 +73,19 @@ static void widen_after_rescale(agjk_signed_result *r, double scale) {
     r->upper = nextafter(r->upper, INFINITY);
 }
 
+/* The margins' share of the rounding, added outwards to both ends: their
+ * sum (margin = margin_a + margin_b, rounded) and its subtraction from a
+ * core bound round by half an ulp each, which the cores' own allowance (a
+ * few ulps of the cores' size) need not cover: two spheres of radii 0.1 and
+ * 0.2 whose centres are 1e-3 apart came out as [-0.29900000000000004,
+ * -0.29900000000000004], just beside the exact -0.29900000000000002.
+ * 0 without margins, where the cores' interval is the answer's. */
+static void widen_for_margins(agjk_signed_result *r, double margin) {
+    if (!(margin > 0.0)) return;
+    r->lower -= 2.0 * DBL_EPSILON * (margin + fabs(r->lower));
+    r->upper += 2.0 * DBL_EPSILON * (margin + fabs(r->upper));
+}
+
 static agjk_status finish(agjk_signed_result *r, int converged) {
     if (!converged) return r->status = AGJK_STATUS_NOT_CONVERGED;
     if (r->lower > 0.0) return r->status = AGJK_STATUS_SEPARATED;
@@ -91,6 +104,7 @@ static agjk_status separated_cores(agjk_signed_result *result, const gjk_summary
     result->signed_distance = core * inv - margin;
     result->upper = g->core_upper * inv - margin;
     result->lower = g->core_lower * inv - margin;
+    widen_for_margins(result, margin);
     result->hint_a = md->hint_a;
     result->hint_b = md->hint_b;
     /* The plane that certifies the lower end; the witness points sit on -x. */
@@ -177,6 +191,7 @@ agjk_status agjk_signed_distance(const agjk_shape *a, const agjk_pose *pose_a,
     double inv = 1.0 / md.scale; /* EPA may have lowered the scale */
     result->lower = -eout.upper * inv - margin;
     result->upper = -eout.lower * inv - margin;
+    widen_for_margins(result, margin);
     result->signed_distance = -eout.estimate * inv - margin;
     agjk_vec3 n = eout.normal;
     result->normal = m3_mul(&pose_a->rotation[0][0], n);

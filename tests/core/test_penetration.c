@@ -9,6 +9,8 @@
  *     pairs (tests/common/ref_depth.h), itself checked against the
  *     separating-axis depth;
  *   - properties: symmetry (normal flipped), rigid invariance, scale covariance.
+ *   - the margins' own rounding: spheres and thin capsules, whose cores are
+ *     points and tiny segments, checked with no slack against exact values;
  * The certified interval must contain the truth on every pair, its width must
  * meet the tolerance asked when the status says converged, and no field may
  * be NaN. */
@@ -492,6 +494,54 @@ START_TEST(witness_points) {
 }
 END_TEST
 
+/* The margins (radii) are added to the cores' answer analytically; their
+ * sum and its subtraction round, by half an ulp each, beyond what the
+ * cores' allowance (a few ulps of the cores' size) covers when the cores are
+ * points or tiny segments: spheres of radii 0.1 and 0.2 with centres 1e-3
+ * apart once got the interval [-0.29900000000000004, -0.29900000000000004],
+ * beside the exact -0.29900000000000002. Exact values in long double, where
+ * these sums and differences of doubles (exponents within 9 of each other)
+ * are exact; the interval must hold them with no slack at all. */
+static void check_exact(const agjk_shape *a, const agjk_pose *pa, const agjk_shape *b,
+                        const agjk_pose *pb, long double exact, const char *what, int i) {
+    agjk_options o = agjk_default_options();
+    agjk_signed_result r = signed_query(a, pa, b, pb, &o);
+    TU_ENSURE((long double)r.lower <= exact && exact <= (long double)r.upper,
+              "%s %d: exact %.21Lg outside [%.21g, %.21g] (%s)", what, i, exact, r.lower, r.upper,
+              agjk_status_string(r.status));
+}
+
+START_TEST(margin_rounding) {
+    ck_assert(LDBL_MANT_DIG >= 64); /* (x86's long double: the values below are exact) */
+    agjk_shape a, b;
+    agjk_pose pa = ident(), pb = at(0.001, 0, 0);
+    TU_CHECK_INT_EQ(agjk_shape_sphere(&a, 0.1), AGJK_STATUS_OK);
+    TU_CHECK_INT_EQ(agjk_shape_sphere(&b, 0.2), AGJK_STATUS_OK);
+    check_exact(&a, &pa, &b, &pb, (long double)0.001 - (long double)0.1 - (long double)0.2,
+                "spheres 0.1 and 0.2", 0);
+    /* Capsules with cores 2e-9 long, crossing at right angles at one point:
+     * the depth is the radii's sum. */
+    agjk_capsule ca = {0.1, 1e-9}, cb = {0.2, 1e-9};
+    TU_CHECK_INT_EQ(agjk_shape_capsule(&a, &ca), AGJK_STATUS_OK);
+    TU_CHECK_INT_EQ(agjk_shape_capsule(&b, &cb), AGJK_STATUS_OK);
+    agjk_pose turned = {{{0, 0, 1}, {0, 1, 0}, {-1, 0, 0}}, {0, 0, 0}}; /* B along world x */
+    check_exact(&a, &pa, &b, &turned, -((long double)0.1 + (long double)0.2), "crossing capsules",
+                0);
+    /* Random spheres, centres apart along x (the cores' distance exact):
+     * radii in [1/16, 1/2), offsets in [1/512, 1). */
+    tu_rng rng;
+    tu_rng_seed(&rng, 1201);
+    for (int i = 0; i < 20000; ++i) {
+        double ra = tu_uniform_range(&rng, 0.0625, 0.5), rb = tu_uniform_range(&rng, 0.0625, 0.5);
+        double dx = tu_uniform_range(&rng, 1.0 / 512.0, 1.0);
+        TU_CHECK_INT_EQ(agjk_shape_sphere(&a, ra), AGJK_STATUS_OK);
+        TU_CHECK_INT_EQ(agjk_shape_sphere(&b, rb), AGJK_STATUS_OK);
+        pb = at(dx, 0, 0);
+        check_exact(&a, &pa, &b, &pb, (long double)dx - ra - rb, "random spheres", i);
+    }
+}
+END_TEST
+
 /* Honest statuses: a full polytope store and the iteration cap end
  * NOT_CONVERGED with an interval that still holds the truth; degenerate
  * starts (GJK ending on a point or a segment: cubes touching corner to corner
@@ -711,5 +761,6 @@ int main(void) {
     TU_ADD(s, witness_points);
     TU_ADD(s, four_point_starts);
     TU_ADD(s, degenerate_and_capped);
+    TU_ADD(s, margin_rounding);
     return tu_run_suite(s);
 }
