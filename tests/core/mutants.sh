@@ -7,7 +7,7 @@
 # pattern no longer matches src/, or that no longer builds, fails the check
 # too ("not applied", "does not build": update it), so that the list cannot
 # go stale unnoticed.
-# Not part of `make check` (about a minute): run `make mutants-core`.
+# Not part of `make check` (a few minutes): run `make mutants-core`.
 #   usage: tests/core/mutants.sh [OUT]   (OUT: the build dir, default out)
 set -u
 OUT=${1:-out}
@@ -40,8 +40,12 @@ gjk-projection-thin-face|src/simplex.c|s/#define WELL_CONDITIONED 1e-2/#define W
 gjk-projection-foot-from-newest|src/simplex.c|s/agjk_vec3 q = face.iq == 3 ? a : w\[face.iq\];/agjk_vec3 q = a;/
 gjk-projection-edge-weight-by-difference|src/simplex.c|s/double s = v3_dot(b, u) \/ uu;/double s = 1.0 - (1.0 - v3_dot(b, u) \/ uu);/
 ellipsoids-apart-without-allowance|src/solver.h|s/double r = md->margin + 128.0 \* DBL_EPSILON \* size;/double r = md->margin;/
+frank-wolfe-drift-unreported|src/solver.c|s/out->noise = sv->md->noise + sv->drift;/out->noise = sv->md->noise;/
+frank-wolfe-drift-not-in-margins|src/solver.c|s/ + noise + sv.drift;/ + noise;/
+triangle-weights-unchecked|src/simplex.c|s/if (v3_norm2(v3_sub(back, foot)) <= limit \* limit \* far) {/if (1) {/
+signed-distance-margins-unwidened|src/penetration.c|s/    if (!(margin > 0.0)) return;/    return;/
 '
-TESTS="simplex shapes api analytic methods properties collide"
+TESTS="simplex shapes api analytic methods properties collide verdicts penetration"
 escaped=0
 echo "$MUTANTS" | while IFS='|' read -r name file expr; do
     [ -n "$name" ] || continue
