@@ -236,7 +236,9 @@ typedef struct agjk_result {
      *  plane of another support direction met on the way (the plane with this
      *  normal then separates the shapes by at least distance - bound); for
      *  agjk_collide when separated, the normal of the separating plane found.
-     *  Zero when intersecting. */
+     *  Zero when intersecting, and for a contact within tolerance whose final
+     *  iterate is zero (shapes that touch exactly, such as boxes face to
+     *  face: no direction is known). */
     agjk_vec3 normal;
     /** Iterations of the solver loop (each computes one or two supports). */
     int32_t iterations;
