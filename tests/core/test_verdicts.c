@@ -460,9 +460,8 @@ START_TEST(frank_wolfe_drift_bounded) {
         agjk_collide(&sa, &id, &sb, &pb, &o, &r);
         TU_ENSURE(r.status != AGJK_STATUS_INTERSECTING, "box and sphere, collide: intersecting");
     }
-    /* Two boxes 71 apart along y, 200 steps: the upper end came out 2.4e-14
-     * below the exact distance (the rounding allowance being 6.5e-14 /
-     * 2). */
+    /* Two boxes 71 apart along y, 200 steps: the upper end, rounding
+     * allowance included, came out 2.4e-14 below the exact distance. */
     agjk_box ba = {{0x1.856fd78ed5da8p-3, 0x1.789e039cce9b8p-3, 0x1.daafa04b8650fp-1}};
     agjk_box bb = {{0x1.0cbb8afeef3bbp-1, 0x1.9ecd002142474p-2, 0x1.083d27365af2p-2}};
     TU_CHECK_INT_EQ(agjk_shape_box(&sa, &ba), AGJK_STATUS_OK);
