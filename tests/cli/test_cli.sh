@@ -602,6 +602,62 @@ distance_is "binary PLY cube" 2 1e-12 "$tmp/bin.ply" "$C" --pose-b 3 0 0 1 0 0 0
 distance_is "GLB cube (node translation 10)" 9 1e-12 "$tmp/cube.glb" "$C"
 # === end of the output / global options block ===
 
+# --- review findings -------------------------------------------------------------
+# --signed taken out of the arguments must leave them NULL-terminated: a pose
+# of six numbers once read a stale last argument as its seventh.
+expect_error "signed, six-number pose" distance --signed "$C" "$C" --pose-b 3 0 0.7071068 0 0 0.7071068
+expect_error "signed, six-number pose (flag last)" distance "$C" "$C" --pose-b 3 0 0.7071068 0 0 0.7071068 --signed
+# Cubes face to face: a contact within tolerance with no direction known;
+# the normal is not computed, so null / n/a, not a zero vector.
+run "touching cubes, collide" 0 collide "$C" "$C" --pose-b 1 0 0 1 0 0 0 --json &&
+    check_json "touching cubes, collide" "r['status'] == 'contact within tolerance' and r['normal'] is None"
+run "touching cubes, distance" 0 distance "$C" "$C" --pose-b 1 0 0 1 0 0 0 &&
+    grep -Eq '^normal: +n/a$' "$tmp/out" && ok || bad "touching cubes: normal printed as a vector"
+# A result that cannot be written: a message and exit status 2, for info too.
+if [ -w /dev/full ]; then
+    for c in info distance; do
+        if [ $c = info ]; then args="$C"; else args="$C $C --pose-b 3 0 0 1 0 0 0"; fi
+        # shellcheck disable=SC2086
+        "$AGJK" $c $args >/dev/full 2>"$tmp/err"
+        got=$?
+        [ "$got" -eq 2 ] && [ -s "$tmp/err" ] && ok || bad "$c to a full disk: status $got, stderr '$(cat "$tmp/err")'"
+    done
+fi
+# A cloud 1e-200 across is as solid as the same cloud at 1: its squared
+# extents once underflowed, and `info` called it a single point.
+python3 -c '
+import random, sys
+random.seed(3)
+pts = [[random.uniform(-1, 1) for _ in range(3)] for i in range(200)]
+for name, s in (("unit", 1.0), ("tiny", 1e-200), ("huge", 1e40)):
+    with open("%s/cloud-%s.obj" % (sys.argv[1], name), "w") as f:
+        f.writelines("v %.17g %.17g %.17g\n" % (x * s, y * s, z * s) for x, y, z in pts)' "$tmp"
+run "cloud at scale 1" 0 info "$tmp/cloud-unit.obj" --json && cp "$tmp/out" "$tmp/cloud-unit.json"
+for sc in tiny huge; do
+    run "cloud $sc" 0 info "$tmp/cloud-$sc.obj" --json &&
+        python3 -c '
+import json, sys
+a = json.load(open(sys.argv[1])); b = json.load(open(sys.argv[2]))
+sys.exit(0 if b["hull"] == a["hull"] == "solid" and b["hull_vertices"] == a["hull_vertices"] and b["hull_triangles"] == a["hull_triangles"] else 1)' \
+            "$tmp/cloud-unit.json" "$tmp/out" && ok || bad "cloud $sc: another hull than at scale 1"
+done
+# Qhull out of memory (a memory limit) is an error, not a flat hull: `info`
+# and `hull` once reported "nearly flat" with status 0, and `hull` wrote no
+# faces.
+python3 -c '
+import math, random, sys
+random.seed(1)
+with open(sys.argv[1] + "/sphere300k.obj", "w") as f:
+    for i in range(300000):
+        z = random.uniform(-1, 1); t = random.uniform(0, 2 * math.pi); r = math.sqrt(1 - z * z)
+        f.write("v %.17g %.17g %.17g\n" % (r * math.cos(t), r * math.sin(t), z))' "$tmp"
+# (A sanitizer's build sets no memory limit: tools/cli/cli_guard.c.)
+if ! grep -aqE '__(asan|tsan)_init' "$AGJK"; then
+    expect_error "info, Qhull out of memory" info "$tmp/sphere300k.obj" --memory-limit 100
+    expect_error "hull, Qhull out of memory" hull "$tmp/sphere300k.obj" --memory-limit 100 -o "$tmp/h300k.off"
+    [ ! -e "$tmp/h300k.off" ] && ok || bad "hull, Qhull out of memory: a file was written"
+fi
+
 run_json_checks
 echo "cli tests: $pass passed, $fail failed"
 [ "$fail" -eq 0 ]

@@ -51,6 +51,9 @@ int cli_parse_double(const char *s, double *out);
 
 void cli_print_help(const char *command, FILE *out);
 void cli_error(const char *fmt, ...);
+/* Flushes standard output: 1, or 0 after saying that the result could not
+ * be written (a full disk, a closed pipe). */
+int cli_flush_result(void);
 
 void cli_guard_start(const cli_args *args);
 

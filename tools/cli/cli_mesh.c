@@ -58,7 +58,7 @@ int cli_cmd_info(int argc, char **argv) {
     if (a.json) info_json(a.inputs[0], &s);
     else info_text(a.inputs[0], &s);
     cli_shape_free(&s);
-    return fflush(stdout) == 0 ? CLI_EXIT_OK : CLI_EXIT_ERROR;
+    return cli_flush_result() ? CLI_EXIT_OK : CLI_EXIT_ERROR;
 }
 
 int cli_cmd_hull(int argc, char **argv) {

@@ -42,6 +42,12 @@ void cli_error(const char *fmt, ...) {
     fputc('\n', stderr);
 }
 
+int cli_flush_result(void) {
+    if (fflush(stdout) == 0 && !ferror(stdout)) return 1;
+    cli_error("cannot write the result to standard output");
+    return 0;
+}
+
 int cli_parse_double(const char *s, double *out) {
     char *end;
     if (!s || !*s || strchr(" \t\n\r\f\v", s[0])) return 0;

@@ -17,7 +17,13 @@
  * gap of collide is reported only without a verdict (contact within
  * tolerance, not converged): a separating plane ends it before any gap. */
 static int has_distance(const char *query) { return strcmp(query, "distance") == 0; }
-static int has_normal(const agjk_result *r) { return r->status != AGJK_STATUS_INTERSECTING; }
+/* Zero when intersecting, and for a contact within tolerance whose final
+ * iterate is zero (agjk_result.normal): not computed then, so n/a, not a
+ * zero vector passed off as a unit normal. */
+static int has_normal(const agjk_result *r) {
+    return r->status != AGJK_STATUS_INTERSECTING &&
+           (r->normal.x != 0.0 || r->normal.y != 0.0 || r->normal.z != 0.0);
+}
 static int has_gap(const char *query, const agjk_result *r) {
     if (r->status == AGJK_STATUS_INTERSECTING) return 0;
     return has_distance(query) || r->status == AGJK_STATUS_CONTACT_WITHIN_TOLERANCE ||
@@ -149,10 +155,7 @@ static int run_query(int argc, char **argv, const char *query) {
                       "at this distance (certified interval: bound %.3g); the answer above is "
                       "certified within its bound", 0.5 * a.query.tolerance, r.bound);
     }
-    if (fflush(stdout) != 0 || ferror(stdout)) {
-        cli_error("cannot write the result to standard output");
-        return CLI_EXIT_ERROR;
-    }
+    if (!cli_flush_result()) return CLI_EXIT_ERROR;
     return exit_status(query, st);
 }
 

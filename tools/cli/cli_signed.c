@@ -5,13 +5,19 @@
 
 #include <string.h>
 
+/* Removes the options' `--signed` (not a file of that name after `--`),
+ * keeping argv NULL-terminated: the parser reads a pose's numbers up to
+ * argv[argc], and a stale last argument there once completed a pose of six
+ * numbers into a wrong seventh. */
 int cli_take_signed_flag(int *argc, char **argv) {
-    int found = 0, k = 0;
+    int found = 0, k = 0, options_done = 0;
     for (int i = 0; i < *argc; ++i) {
-        if (strcmp(argv[i], "--signed") == 0) found = 1;
+        if (!options_done && strcmp(argv[i], "--") == 0) options_done = 1;
+        if (!options_done && strcmp(argv[i], "--signed") == 0) found = 1;
         else argv[k++] = argv[i];
     }
     *argc = k;
+    argv[k] = NULL;
     return found;
 }
 
@@ -64,9 +70,6 @@ int cli_signed_run(const cli_args *a, const agjk_shape *sa, const agjk_shape *sb
     if (st == AGJK_STATUS_NOT_CONVERGED)
         cli_error("not converged: the interval did not reach the tolerance (iteration cap, "
                   "polytope store full, or rounding); the answer above lies in its interval");
-    if (fflush(stdout) != 0 || ferror(stdout)) {
-        cli_error("cannot write the result to standard output");
-        return CLI_EXIT_ERROR;
-    }
+    if (!cli_flush_result()) return CLI_EXIT_ERROR;
     return st == AGJK_STATUS_NOT_CONVERGED ? CLI_EXIT_NOT_CONVERGED : CLI_EXIT_OK;
 }

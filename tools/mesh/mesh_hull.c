@@ -38,13 +38,34 @@ static agjk_vec3 cross(agjk_vec3 a, agjk_vec3 b) {
     return r;
 }
 
-/* Index of the point maximising f(point); ties keep the first. */
-static size_t farthest(const agjk_vec3 *p, size_t n, double (*f)(agjk_vec3, const agjk_vec3 *),
-                       const agjk_vec3 *ctx, double *best_value) {
+static agjk_vec3 scaled(agjk_vec3 a, double s) {
+    agjk_vec3 r = {a.x * s, a.y * s, a.z * s};
+    return r;
+}
+
+/* For a box whose largest coordinate lies outside [2^-400, 2^400], the
+ * power of two that brings it to [1, 2): squares and products of the scaled
+ * points neither underflow nor overflow (a cloud 1e-200 across once
+ * measured as a single point), and the scaling is exact. 1 otherwise (the
+ * meshes of ordinary size see Qhull's input as it was), and for a box at the
+ * origin. */
+static double unit_scale(agjk_vec3 lo, agjk_vec3 hi) {
+    double m = fmax(fmax(fmax(fabs(lo.x), fabs(hi.x)), fmax(fabs(lo.y), fabs(hi.y))),
+                    fmax(fabs(lo.z), fabs(hi.z)));
+    int e;
+    if (!(m > 0.0) || !isfinite(m) || (m >= 0x1p-400 && m <= 0x1p400)) return 1.0;
+    frexp(m, &e); /* m = f 2^e, f in [0.5, 1) */
+    return ldexp(1.0, 1 - e);
+}
+
+/* Index of the point maximising f(point scaled by s); ties keep the first. */
+static size_t farthest(const agjk_vec3 *p, size_t n, double s,
+                       double (*f)(agjk_vec3, const agjk_vec3 *), const agjk_vec3 *ctx,
+                       double *best_value) {
     size_t best = 0;
     *best_value = -1.0;
     for (size_t i = 0; i < n; i++) {
-        double v = f(p[i], ctx);
+        double v = f(scaled(p[i], s), ctx);
         if (v > *best_value) {
             *best_value = v;
             best = i;
@@ -74,20 +95,22 @@ static agjk_vec3 unit(agjk_vec3 v) {
 
 /* Affine dimension of the set, with a tolerance relative to its extent
  * (1e-12: far above double rounding of the coordinates, far below any
- * thickness a real part has). */
-static int affine_dimension(const agjk_vec3 *p, size_t n) {
+ * thickness a real part has), measured on the points scaled by s
+ * (unit_scale). */
+static int affine_dimension(const agjk_vec3 *p, size_t n, double s) {
     agjk_vec3 ctx[3];
     double d0, d1, d2;
-    ctx[0] = p[0];
-    size_t a = farthest(p, n, dist_point, ctx, &d0);
+    agjk_vec3 p0 = scaled(p[0], s);
+    ctx[0] = p0;
+    size_t a = farthest(p, n, s, dist_point, ctx, &d0);
     double extent = sqrt(d0);
     double tol = 1e-12 * extent;
     if (extent == 0.0) return 0;
-    ctx[1] = unit(sub(p[a], p[0]));
-    size_t b = farthest(p, n, dist_line, ctx, &d1);
+    ctx[1] = unit(sub(scaled(p[a], s), p0));
+    size_t b = farthest(p, n, s, dist_line, ctx, &d1);
     if (sqrt(d1) <= tol) return 1;
-    ctx[2] = unit(cross(ctx[1], sub(p[b], p[0])));
-    farthest(p, n, dist_plane, ctx, &d2);
+    ctx[2] = unit(cross(ctx[1], sub(scaled(p[b], s), p0)));
+    farthest(p, n, s, dist_plane, ctx, &d2);
     return d2 <= tol ? 2 : 3;
 }
 
@@ -113,9 +136,10 @@ static int keep_points(const agjk_vec3 *points, size_t count, mesh_hull *hull) {
     return 1;
 }
 
-/* Copies Qhull's vertices (renumbered 0..n-1) and triangles, each oriented
- * so that its normal agrees with the facet's outward normal. */
-static int extract_hull(qhT *qh, mesh_hull *hull) {
+/* Copies Qhull's vertices (renumbered 0..n-1, taken from `points`, which
+ * Qhull saw scaled) and triangles, each oriented so that its normal agrees
+ * with the facet's outward normal. */
+static int extract_hull(qhT *qh, const agjk_vec3 *points, mesh_hull *hull) {
     vertexT *vertex, **vertexp;
     facetT *facet;
     int32_t *map = malloc((size_t)qh->num_points * sizeof *map);
@@ -129,8 +153,7 @@ static int extract_hull(qhT *qh, mesh_hull *hull) {
     FORALLvertices {
         int id = qh_pointid(qh, vertex->point);
         map[id] = nv;
-        agjk_vec3 v = {vertex->point[0], vertex->point[1], vertex->point[2]};
-        hull->vertices[nv++] = v;
+        hull->vertices[nv++] = points[id];
     }
     FORALLfacets {
         int32_t tri[3], k = 0;
@@ -152,18 +175,28 @@ static int extract_hull(qhT *qh, mesh_hull *hull) {
     return 1;
 }
 
-/* Runs Qhull; Qhull's messages go to a memory stream we discard unless it fails. */
-static int run_qhull(const agjk_vec3 *points, size_t count, mesh_hull *hull, char *err,
-                     size_t err_size) {
+/* Qhull's exit codes that say the set is too thin for a solid hull (flat to
+ * its precision), as against running out of memory or failing inside. */
+static int qhull_found_it_thin(int exitcode) {
+    return exitcode == qh_ERRsingular || exitcode == qh_ERRprec || exitcode == qh_ERRtopology ||
+           exitcode == qh_ERRwide;
+}
+
+/* Runs Qhull; Qhull's messages go to a memory stream we discard unless it
+ * fails. On failure *thin tells whether the set was too thin (else: out of
+ * memory, or Qhull's own error). */
+static int run_qhull(const agjk_vec3 *points, size_t count, double s, mesh_hull *hull, int *thin,
+                     char *err, size_t err_size) {
+    *thin = 0;
     coordT *coords = malloc(count * 3 * sizeof *coords);
     if (!coords) {
         set_error(err, err_size, "out of memory");
         return 0;
     }
     for (size_t i = 0; i < count; i++) {
-        coords[3 * i] = points[i].x;
-        coords[3 * i + 1] = points[i].y;
-        coords[3 * i + 2] = points[i].z;
+        coords[3 * i] = points[i].x * s;
+        coords[3 * i + 1] = points[i].y * s;
+        coords[3 * i + 2] = points[i].z * s;
     }
     char *log = NULL;
     size_t log_size = 0;
@@ -173,9 +206,12 @@ static int run_qhull(const agjk_vec3 *points, size_t count, mesh_hull *hull, cha
     QHULL_LIB_CHECK
     qh_zero(qh, errfile);
     int exitcode = qh_new_qhull(qh, 3, (int)count, coords, False, options, NULL, errfile);
-    int ok = exitcode == 0 && extract_hull(qh, hull);
+    int ok = exitcode == 0 && extract_hull(qh, points, hull);
     if (errfile) fclose(errfile);
-    if (!ok) {
+    *thin = qhull_found_it_thin(exitcode);
+    if (!ok && exitcode == 0) {
+        set_error(err, err_size, "out of memory");
+    } else if (!ok) {
         const char *why = (log && *log) ? log : "unknown error";
         size_t len = strcspn(why, "\n");
         set_error(err, err_size, "Qhull failed (exit code %d): %.*s", exitcode, (int)len, why);
@@ -210,7 +246,7 @@ int mesh_hull_points_only(const agjk_vec3 *points, size_t count, mesh_hull *hull
         return 0;
     }
     bounding_box(points, count, hull);
-    hull->dimension = affine_dimension(points, count);
+    hull->dimension = affine_dimension(points, count, unit_scale(hull->bbox_min, hull->bbox_max));
     hull->vertices = malloc(count * sizeof *hull->vertices);
     if (!hull->vertices) {
         set_error(err, err_size, "out of memory");
@@ -233,8 +269,17 @@ int mesh_hull_build(const agjk_vec3 *points, size_t count, int with_adjacency, m
         return 0;
     }
     bounding_box(points, count, hull);
-    hull->dimension = affine_dimension(points, count);
-    int ok = hull->dimension == 3 && run_qhull(points, count, hull, err, err_size);
+    double s = unit_scale(hull->bbox_min, hull->bbox_max);
+    hull->dimension = affine_dimension(points, count, s);
+    int thin = 0;
+    int ok = hull->dimension == 3 && run_qhull(points, count, s, hull, &thin, err, err_size);
+    if (!ok && hull->dimension == 3 && !thin) {
+        /* Out of memory (a --memory-limit, say) or Qhull's own failure: an
+         * error, not a flat hull (which `info` and `hull` once reported, with
+         * exit status 0 and a hull of no faces). */
+        mesh_hull_free(hull);
+        return 0;
+    }
     if (!ok && hull->dimension == 3) {
         /* Thinner than Qhull accepts though thicker than our test: keep the points. */
         free(hull->vertices);
