@@ -99,7 +99,8 @@ static const char help_query_options[] =
     "        A value the query did not compute is null: collide computes no\n"
     "        distance, bound or witness points, and its gap only without a\n"
     "        verdict (contact within tolerance, not converged); intersecting\n"
-    "        shapes have no normal and no gap.\n";
+    "        shapes have no normal and no gap, and shapes that touch exactly\n"
+    "        (a contact within tolerance with no direction) no normal.\n";
 
 static const char help_limits[] =
     "LIMITS\n"
