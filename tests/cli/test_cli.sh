@@ -603,6 +603,9 @@ distance_is "GLB cube (node translation 10)" 9 1e-12 "$tmp/cube.glb" "$C"
 # === end of the output / global options block ===
 
 # --- review findings -------------------------------------------------------------
+# Global options before `help` (moved after it) are not its topic.
+run "global option before help" 0 --json help distance && grep -q "SYNOPSIS" "$tmp/out" && ok ||
+    bad "agjk --json help distance"
 # --signed taken out of the arguments must leave them NULL-terminated: a pose
 # of six numbers once read a stale last argument as its seventh.
 expect_error "signed, six-number pose" distance --signed "$C" "$C" --pose-b 3 0 0.7071068 0 0 0.7071068

@@ -72,12 +72,17 @@ static int dispatch(int argc, char **argv) {
         return CLI_EXIT_OK;
     }
     if (strcmp(cmd, "help") == 0) {
-        if (argc > 2 && strcmp(argv[2], "distance") && strcmp(argv[2], "collide") &&
-            strcmp(argv[2], "info") && strcmp(argv[2], "hull")) {
-            cli_error("no help for '%s': commands are distance, collide, info, hull", argv[2]);
+        /* (Global options given before `help` now follow it: skipped.) */
+        int i = 2;
+        while (i < argc && global_option_values(argv[i]) >= 0)
+            i += 1 + global_option_values(argv[i]);
+        const char *topic = i < argc ? argv[i] : NULL;
+        if (topic && strcmp(topic, "distance") && strcmp(topic, "collide") &&
+            strcmp(topic, "info") && strcmp(topic, "hull")) {
+            cli_error("no help for '%s': commands are distance, collide, info, hull", topic);
             return CLI_EXIT_ERROR;
         }
-        cli_print_help(argc > 2 ? argv[2] : NULL, stdout);
+        cli_print_help(topic, stdout);
         return CLI_EXIT_OK;
     }
     cli_error("unknown command '%s' (commands: distance, collide, info, hull; see agjk --help)",
