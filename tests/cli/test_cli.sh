@@ -636,6 +636,7 @@ for name, s in (("unit", 1.0), ("tiny", 1e-200), ("huge", 1e40)):
     with open("%s/cloud-%s.obj" % (sys.argv[1], name), "w") as f:
         f.writelines("v %.17g %.17g %.17g\n" % (x * s, y * s, z * s) for x, y, z in pts)' "$tmp"
 run "cloud at scale 1" 0 info "$tmp/cloud-unit.obj" --json && cp "$tmp/out" "$tmp/cloud-unit.json"
+run "cloud at scale 1, hull" 0 hull "$tmp/cloud-unit.obj" -o "$tmp/cloud-unit.off"
 for sc in tiny huge; do
     run "cloud $sc" 0 info "$tmp/cloud-$sc.obj" --json &&
         python3 -c '
@@ -643,6 +644,11 @@ import json, sys
 a = json.load(open(sys.argv[1])); b = json.load(open(sys.argv[2]))
 sys.exit(0 if b["hull"] == a["hull"] == "solid" and b["hull_vertices"] == a["hull_vertices"] and b["hull_triangles"] == a["hull_triangles"] else 1)' \
             "$tmp/cloud-unit.json" "$tmp/out" && ok || bad "cloud $sc: another hull than at scale 1"
+    # The same triangles, the same way round (their orientation was once
+    # judged on the points themselves, whose normals underflowed).
+    run "cloud $sc, hull" 0 hull "$tmp/cloud-$sc.obj" -o "$tmp/cloud-$sc.off" &&
+        [ "$(sed -n '/^3 /p' "$tmp/cloud-unit.off")" = "$(sed -n '/^3 /p' "$tmp/cloud-$sc.off")" ] &&
+        ok || bad "cloud $sc: other hull triangles than at scale 1"
 done
 # Qhull out of memory (a memory limit) is an error, not a flat hull: `info`
 # and `hull` once reported "nearly flat" with status 0, and `hull` wrote no

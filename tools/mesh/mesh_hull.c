@@ -138,7 +138,9 @@ static int keep_points(const agjk_vec3 *points, size_t count, mesh_hull *hull) {
 
 /* Copies Qhull's vertices (renumbered 0..n-1, taken from `points`, which
  * Qhull saw scaled) and triangles, each oriented so that its normal agrees
- * with the facet's outward normal. */
+ * with the facet's outward normal. The orientation is judged on Qhull's
+ * scaled copies: on a cloud 1e-200 across the normals of the points
+ * themselves underflow to zero, which left half the triangles inward. */
 static int extract_hull(qhT *qh, const agjk_vec3 *points, mesh_hull *hull) {
     vertexT *vertex, **vertexp;
     facetT *facet;
@@ -158,9 +160,14 @@ static int extract_hull(qhT *qh, const agjk_vec3 *points, mesh_hull *hull) {
     FORALLfacets {
         int32_t tri[3], k = 0;
         if (qh_setsize(qh, facet->vertices) != 3) continue; /* Qt: all are triangles */
-        FOREACHvertex_(facet->vertices) tri[k++] = map[qh_pointid(qh, vertex->point)];
-        agjk_vec3 a = hull->vertices[tri[0]], b = hull->vertices[tri[1]], c = hull->vertices[tri[2]];
-        agjk_vec3 n = cross(sub(b, a), sub(c, a));
+        agjk_vec3 q[3];
+        FOREACHvertex_(facet->vertices) {
+            q[k].x = vertex->point[0];
+            q[k].y = vertex->point[1];
+            q[k].z = vertex->point[2];
+            tri[k++] = map[qh_pointid(qh, vertex->point)];
+        }
+        agjk_vec3 n = cross(sub(q[1], q[0]), sub(q[2], q[0]));
         agjk_vec3 outward = {facet->normal[0], facet->normal[1], facet->normal[2]};
         if (dot(n, outward) < 0) {
             int32_t t = tri[1];
