@@ -6,8 +6,25 @@
  * larger <d, v> until none is larger. On the edge graph of a convex polytope a
  * vertex with no better neighbour is a global maximiser (the simplex method's
  * optimality argument), and coherent directions make the walk a few steps
- * long. Each step strictly increases <d, v>, so no vertex is visited twice: the
- * walk is bounded by the vertex count. */
+ * long. Each step strictly increases the computed <d, v>, so no vertex is
+ * visited twice: the walk is bounded by the vertex count.
+ *
+ * In floating point "no better neighbour" is not enough: the rounding of
+ * <d, v> grows with the coordinates, and an edge far shorter than them can
+ * gain less than that rounding. Near x = 1000 a climb stopped before a 1e-9
+ * edge whose far end led to a vertex 5e-5 higher, and the solver certified a
+ * wrong distance from that support. So the final vertex v is certified.
+ * Usually by the walk's own last pass (climb_clear): every neighbour's
+ * computed <d, u> lies below v's by more than the rounding of the two, which
+ * climb_step bounds as it goes (3 eps of sum |d_i u_i|). Otherwise edge by
+ * edge (vertex_certified): each gain <d, u - v>, computed from the edge so
+ * that its rounding scales with the edge, must be <= 0 beyond that rounding,
+ * or exactly 0 (a tie: every term of the sum is). An edge within rounding of
+ * 0 (GJK's last directions are orthogonal to an edge or a face), or rising,
+ * sends the answer to climb_settle: edges within rounding are followed to
+ * the vertices that tie with v, and the climb goes on where an edge rises; a
+ * scan is its last resort. The bound in climb_step costs the climb about a
+ * quarter of its time on the benchmark's hulls (README). */
 #include "shape_common.h"
 
 /* Below this many vertices a scan beats hill climbing (Coal uses 32; see the
@@ -40,11 +57,16 @@ static void polytope_scan(const agjk_polytope *p, agjk_vec3 d, agjk_vec3 *out, i
  * current vertex and its <d, v>, the neighbour list being read, the moves
  * made) advanced one neighbour test at a time, so that two climbs can be
  * taken in turns (agjk__polytope_pair_support). */
+#define DOT_ROUNDING (8.0 * DBL_EPSILON)
+
 typedef struct climb {
     const agjk_vec3 *v;
     const int32_t *offsets, *neighbors;
     agjk_vec3 d;
     double current_dot;
+    /* Over the neighbours of the current vertex tested so far: the largest
+     * <d, u> plus a bound on its rounding (climb_clear). */
+    double near;
     int current, e, end, moves, limit;
 } climb;
 
@@ -59,25 +81,165 @@ static inline void climb_begin(climb *c, const agjk_polytope *p, agjk_vec3 d, in
     c->end = c->offsets[c->current + 1];
     c->moves = 0;
     c->limit = p->vertex_count;
+    c->near = -INFINITY;
 }
 
 /* The next neighbour test: 0 once the climb has ended (no better
- * neighbour: a global maximiser; or vertex_count moves made, which only a
- * graph that is not the hull's edge graph can take). */
+ * neighbour: a global maximiser, to be certified; or vertex_count moves
+ * made, which only a graph that is not the hull's edge graph can take). */
 static inline int climb_step(climb *c) {
     if (c->e == c->end) return 0;
     int u = c->neighbors[c->e];
-    double dot = v3_dot(c->d, c->v[u]);
+    agjk_vec3 q = c->v[u];
+    double px = c->d.x * q.x, py = c->d.y * q.y, pz = c->d.z * q.z;
+    double dot = px + py + pz;
     if (dot > c->current_dot) {
         c->current_dot = dot;
         c->current = u;
+        c->near = -INFINITY;
         if (++c->moves == c->limit) return 0;
         c->e = c->offsets[u];
         c->end = c->offsets[u + 1];
     } else {
+        double high = dot + DOT_ROUNDING * (fabs(px) + fabs(py) + fabs(pz));
+        c->near = high > c->near ? high : c->near;
         ++c->e;
     }
     return 1;
+}
+
+/* The climb ended on vertex v = c->current, whose every neighbour u has a
+ * computed <d, u> no larger than its own. Certified at once when each one
+ * lies below by more than the rounding of the two: <d, x> is computed to
+ * 3 eps of sum |d_i x_i| (a few eps more here cover the test's own
+ * rounding); climb_step keeps the largest <d, u> plus that allowance. The
+ * vertices left undecided (ties, and the near-ties GJK's last directions
+ * give, orthogonal to an edge or a face) go to vertex_certified and
+ * climb_settle. */
+static inline int climb_clear(const climb *c) {
+    agjk_vec3 d = c->d, q = c->v[c->current];
+    double own = fabs(d.x * q.x) + fabs(d.y * q.y) + fabs(d.z * q.z);
+    return c->near < c->current_dot - DOT_ROUNDING * own - 0x1p-1000;
+}
+
+/* The rounding of a gain <d, fl(u - v)> = sum p_i, p_i = fl(d_i fl(e_i)),
+ * against <d, u - v>: the subtraction's relative eps and the sum's 2 eps on
+ * each |p_i|, plus the products' own eps, with room for the bound's own
+ * rounding; and an absolute term for products that underflow. */
+#define GAIN_ROUNDING (6.0 * DBL_EPSILON)
+#define GAIN_UNDERFLOW 0x1p-1000
+
+/* An edge e = u - v's gain along d, classified: EDGE_DOWN when it is <= 0
+ * beyond its rounding, or exactly 0 because every term is (a factor is 0:
+ * an exact tie, which cannot lead to a rise); EDGE_UP when it is > 0 beyond
+ * its rounding; EDGE_FLAT otherwise (within rounding of 0). */
+enum { EDGE_DOWN, EDGE_UP, EDGE_FLAT };
+static inline int edge_class(agjk_vec3 d, agjk_vec3 e) {
+    double px = d.x * e.x, py = d.y * e.y, pz = d.z * e.z;
+    double gain = px + py + pz;
+    double rounding = GAIN_ROUNDING * (fabs(px) + fabs(py) + fabs(pz)) + GAIN_UNDERFLOW;
+    if (-gain > rounding) return EDGE_DOWN;
+    if (gain > rounding) return EDGE_UP;
+    int tie = gain == 0.0 && (d.x == 0.0 || e.x == 0.0) && (d.y == 0.0 || e.y == 0.0) &&
+              (d.z == 0.0 || e.z == 0.0);
+    return tie ? EDGE_DOWN : EDGE_FLAT;
+}
+
+/* Whether every edge of vertex i goes down (edge_class): then i is a global
+ * maximiser, certified. */
+static inline int vertex_certified(const agjk_polytope *p, agjk_vec3 d, int i) {
+    agjk_vec3 at = p->vertices[i];
+    int ok = 1;
+    for (int e = p->neighbor_offsets[i]; e < p->neighbor_offsets[i + 1]; ++e)
+        ok &= edge_class(d, v3_sub(p->vertices[p->neighbors[e]], at)) == EDGE_DOWN;
+    return ok;
+}
+
+/* A climb's final vertex that vertex_certified could not certify: some edge
+ * is flat (GJK's directions end orthogonal to an edge or a face of the
+ * polytope, so ties within rounding are common near convergence) or goes up
+ * (a rise the rounded comparison of <d, u> with <d, v> missed). The flat
+ * edges are followed, PLATEAU_MAX vertices at most: if no vertex of that
+ * plateau has an edge going up, the exact maximiser is among them (from any
+ * vertex that is not a maximiser an edge rises exactly, and each such edge
+ * is flat or up, so rising edges never leave the plateau), and the plateau
+ * vertex with the largest <d, v> is as good as a scan's answer. Returns that
+ * vertex; or -1 - u when the edge to u goes up (the climb goes on from u);
+ * or PLATEAU_SCAN when the plateau is too large. */
+#define PLATEAU_MAX 32
+#define PLATEAU_SCAN (-1 - AGJK_POLYTOPE_MAX_VERTICES - 1)
+static AGJK__NOINLINE int plateau_best(const agjk_polytope *p, agjk_vec3 d, int start) {
+    int plateau[PLATEAU_MAX];
+    int n = 1;
+    plateau[0] = start;
+    for (int k = 0; k < n; ++k) {
+        int i = plateau[k];
+        agjk_vec3 at = p->vertices[i];
+        for (int e = p->neighbor_offsets[i]; e < p->neighbor_offsets[i + 1]; ++e) {
+            int u = p->neighbors[e];
+            int c = edge_class(d, v3_sub(p->vertices[u], at));
+            if (c == EDGE_UP) return -1 - u;
+            if (c == EDGE_DOWN) continue;
+            int seen = 0;
+            for (int m = 0; m < n && !seen; ++m) seen = plateau[m] == u;
+            if (seen) continue;
+            if (n == PLATEAU_MAX) return PLATEAU_SCAN;
+            plateau[n++] = u;
+        }
+    }
+    int best = plateau[0];
+    double best_dot = v3_dot(d, p->vertices[best]);
+    for (int k = 1; k < n; ++k) {
+        double dot = v3_dot(d, p->vertices[plateau[k]]);
+        if (dot > best_dot) {
+            best_dot = dot;
+            best = plateau[k];
+        }
+    }
+    return best;
+}
+
+/* The climb's answer, certified: the final vertex `current` when every edge
+ * goes down; else the plateau's best, with the climb resumed where an edge
+ * goes up (a few times at most: then, or on a plateau too large, or after a
+ * climb cut off by its bound, a scan). By value, so that the callers' climbs
+ * stay in registers. */
+#define CLIMB_RESUMES 4
+static AGJK__NOINLINE void climb_settle(const agjk_polytope *p, agjk_vec3 d, int current,
+                                        int cut, agjk_vec3 *out, int *hint) {
+    for (int r = 0; r < CLIMB_RESUMES && !cut; ++r) {
+        int best = plateau_best(p, d, current);
+        if (best >= 0) {
+            *hint = best;
+            *out = p->vertices[best];
+            return;
+        }
+        if (best == PLATEAU_SCAN) break;
+        /* on from the vertex the rising edge leads to */
+        climb c;
+        climb_begin(&c, p, d, -1 - best);
+        while (climb_step(&c)) {
+        }
+        current = c.current;
+        cut = c.moves == c.limit;
+        if (!cut && vertex_certified(p, d, current)) {
+            *hint = current;
+            *out = p->vertices[current];
+            return;
+        }
+    }
+    polytope_scan(p, d, out, hint);
+}
+
+/* The climb's final vertex into *out and *hint, certified (climb_settle). */
+static inline void climb_answer(const agjk_polytope *p, agjk_vec3 d, int current, int cut,
+                                int clear, agjk_vec3 *out, int *hint) {
+    if (!cut && (clear || vertex_certified(p, d, current))) {
+        *hint = current;
+        *out = p->vertices[current];
+        return;
+    }
+    climb_settle(p, d, current, cut, out, hint);
 }
 
 static void polytope_climb(const agjk_polytope *p, agjk_vec3 d, agjk_vec3 *out, int *hint) {
@@ -85,8 +247,7 @@ static void polytope_climb(const agjk_polytope *p, agjk_vec3 d, agjk_vec3 *out, 
     climb_begin(&c, p, d, *hint);
     while (climb_step(&c)) {
     }
-    *hint = c.current;
-    *out = c.v[c.current];
+    climb_answer(p, d, c.current, c.moves == c.limit, climb_clear(&c), out, hint);
 }
 
 static int climbs(const agjk_polytope *p) {
@@ -127,10 +288,10 @@ void agjk__polytope_pair_support(const void *data_a, const agjk_vec3 *direction_
     }
     while (run_a) run_a = climb_step(&a);
     while (run_b) run_b = climb_step(&b);
-    *hint_a = a.current;
-    *out_a = a.v[a.current];
-    *hint_b = b.current;
-    *out_b = b.v[b.current];
+    int current_a = a.current, cut_a = a.moves == a.limit, clear_a = climb_clear(&a);
+    int current_b = b.current, cut_b = b.moves == b.limit, clear_b = climb_clear(&b);
+    climb_answer(pa, *direction_a, current_a, cut_a, clear_a, out_a, hint_a);
+    climb_answer(pb, *direction_b, current_b, cut_b, clear_b, out_b, hint_b);
 }
 
 static int adjacency_is_valid(const agjk_polytope *p) {

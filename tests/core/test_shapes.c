@@ -640,6 +640,133 @@ START_TEST(polytope_pair_support_matches_single) {
 }
 END_TEST
 
+/* A prism over a strictly convex polygon near x = offset whose vertex v =
+ * (offset + 1, 0) has a very short edge to a = (offset + 1, edge), and
+ * beyond a, w = (offset + 1 - 1e-6, 1) (then a half circle back). Along d =
+ * (1, t, 0) with t > 0 the short edge gains t * edge, below the rounding of
+ * <d, v> near x = 1001, while w lies higher than v by about t - 1e-6. The
+ * caps are fans from a vertex far from v, so that v, a and w have few
+ * neighbours and the climb from v must cross the short edge. Returns the
+ * vertex count; *nt the triangle count. */
+#define PRISM_SIDE 20
+static int short_edge_prism(double offset, double edge, agjk_vec3 *v, int32_t *tris, int *nt) {
+    double px[PRISM_SIDE], py[PRISM_SIDE];
+    int n = 0;
+    px[n] = offset + 1.0, py[n++] = 0.0;
+    px[n] = offset + 1.0, py[n++] = edge;
+    px[n] = offset + 1.0 - 1e-6, py[n++] = 1.0;
+    for (int k = 0; k < PRISM_SIDE - 3; ++k) {
+        double t = 1.5707963267948966 + 3.141592653589793 * k / (PRISM_SIDE - 4);
+        px[n] = offset - 1.0 + 1.5 * cos(t), py[n++] = 1.5 * sin(t);
+    }
+    for (int i = 0; i < n; ++i) {
+        v[i] = (agjk_vec3){px[i], py[i], 1.0};
+        v[n + i] = (agjk_vec3){px[i], py[i], -1.0};
+    }
+    int t = 0, apex = n / 2 + 1;
+    for (int i = 0; i < n; ++i) {
+        int j = (i + 1) % n;
+        int32_t side[2][3] = {{i, j, n + j}, {i, n + j, n + i}};
+        for (int m = 0; m < 2; ++m, ++t) memcpy(&tris[3 * t], side[m], sizeof side[m]);
+        if (i != apex && j != apex) {
+            int32_t cap[2][3] = {{apex, i, j}, {n + apex, n + j, n + i}};
+            for (int m = 0; m < 2; ++m, ++t) memcpy(&tris[3 * t], cap[m], sizeof cap[m]);
+        }
+    }
+    *nt = t;
+    return 2 * n;
+}
+
+START_TEST(polytope_climb_short_edges) {
+    /* The climb's support value against the exact maximum over the
+     * vertices (long double: each product of two doubles to 64 bits), from
+     * every hint, with edges of 1e-9, 1e-12 and one ulp of the coordinates,
+     * at offsets 0, 1e3 and 1e6: never below it by more than a scan can be
+     * (a few ulps of |d|_1 max |v|). Then distance queries against a point
+     * beyond w: the certified interval holds the exact distance, and a
+     * point just inside the prism, past the short edge, is never called
+     * separated. */
+    static agjk_vec3 v[2 * PRISM_SIDE];
+    static int32_t tris[3 * 4 * PRISM_SIDE];
+    const double offsets[3] = {0.0, 1e3, 1e6};
+    int checked = 0;
+    for (int oi = 0; oi < 3; ++oi) {
+        double offset = offsets[oi];
+        double edges[3] = {1e-9, 1e-12, nextafter(offset + 1.0, INFINITY) - (offset + 1.0)};
+        for (int ei = 0; ei < 3; ++ei) {
+            int nt, n = short_edge_prism(offset, edges[ei], v, tris, &nt);
+            agjk_polytope poly = {v, n, NULL, NULL};
+            TU_CHECK_INT_EQ(agjk_polytope_build_adjacency(&poly, tris, nt), AGJK_STATUS_OK);
+            agjk_shape shape;
+            TU_CHECK_INT_EQ(agjk_shape_polytope(&shape, &poly), AGJK_STATUS_OK);
+            double vmax = 0.0;
+            for (int i = 0; i < n; ++i) vmax = fmax(vmax, fmax(fabs(v[i].x), fabs(v[i].y)));
+            for (int di = 0; di < 60; ++di) {
+                /* t from 1e-2 down to 1e-8: w above v by t - 1e-6, or below */
+                double t = pow(10.0, -2.0 - 6.0 * di / 59.0);
+                agjk_vec3 d = {1.0, t, di % 2 ? 0.0 : 1e-3 * t};
+                long double best = -INFINITY;
+                for (int i = 0; i < n; ++i)
+                    best = fmaxl(best, (long double)d.x * v[i].x + (long double)d.y * v[i].y +
+                                           (long double)d.z * v[i].z);
+                for (int hint = 0; hint < n; ++hint) {
+                    int h = hint;
+                    agjk_vec3 s;
+                    shape.support(shape.data, &d, &s, &h);
+                    long double got =
+                        (long double)d.x * s.x + (long double)d.y * s.y + (long double)d.z * s.z;
+                    double allowed = 8.0 * DBL_EPSILON * (1.0 + t + 1e-3 * t) * vmax;
+                    TU_ENSURE(got >= best - allowed,
+                              "offset %g edge %g t %g from hint %d: vertex %d, %.21Lg below the "
+                              "maximum %.21Lg",
+                              offset, edges[ei], t, hint, h, best - got, best);
+                    ++checked;
+                }
+            }
+            /* Queries: B a point at q. The exact distance to the prism's
+             * side (|z| <= 1) is the distance to the polygon. */
+            agjk_shape point;
+            agjk_shape_point(&point);
+            agjk_pose ia = {{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}, {0, 0, 0}}, pb = ia;
+            pb.translation = (agjk_vec3){offset + 1.0 + 1e5, 6.0, 0.0};
+            int sides = n / 2;
+            long double exact = INFINITY;
+            for (int i = 0; i < sides; ++i) {
+                int j = (i + 1) % sides;
+                long double ax = v[i].x, ay = v[i].y, ex = (long double)v[j].x - ax,
+                            ey = (long double)v[j].y - ay;
+                long double qx = (long double)pb.translation.x - ax,
+                            qy = (long double)pb.translation.y - ay;
+                long double u = (qx * ex + qy * ey) / (ex * ex + ey * ey);
+                u = u < 0 ? 0 : (u > 1 ? 1 : u);
+                exact = fminl(exact, hypotl(qx - u * ex, qy - u * ey));
+            }
+            /* just inside, past the short edge: halfway between a and w */
+            agjk_pose inside = ia;
+            inside.translation = (agjk_vec3){offset + 1.0 - 0.6e-6, 0.4, 0.0};
+            for (int m = 0; m <= AGJK_METHOD_ADAPTIVE; ++m) {
+                agjk_options o = agjk_default_options();
+                o.method = (agjk_method)m;
+                agjk_result r;
+                TU_CHECK_INT_EQ(agjk_distance(&shape, &ia, &point, &pb, &o, &r), r.status);
+                TU_ENSURE(r.status != AGJK_STATUS_INVALID_INPUT &&
+                              (long double)r.distance - r.bound <= exact &&
+                              exact <= (long double)r.distance,
+                          "offset %g edge %g %s: [%.17g, %.17g] misses %.17Lg", offset,
+                          edges[ei], agjk_method_name(o.method), r.distance - r.bound,
+                          r.distance, exact);
+                agjk_collide(&shape, &ia, &point, &inside, &o, &r);
+                TU_ENSURE(r.status != AGJK_STATUS_SEPARATED,
+                          "offset %g edge %g %s: a point inside called separated", offset,
+                          edges[ei], agjk_method_name(o.method));
+            }
+            agjk_polytope_free_adjacency(&poly);
+        }
+    }
+    TU_ENSURE(checked == 9 * 60 * 2 * PRISM_SIDE, "%d support checks", checked);
+}
+END_TEST
+
 int main(void) {
     Suite *s = suite_create("shapes");
     TU_ADD(s, builtin_shapes);
@@ -651,5 +778,6 @@ int main(void) {
     TU_ADD(s, polytope_hill_climbing);
     TU_ADD(s, polytope_hill_climbing_threshold);
     TU_ADD(s, polytope_pair_support_matches_single);
+    TU_ADD(s, polytope_climb_short_edges);
     return tu_run_suite(s);
 }
