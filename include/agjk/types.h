@@ -141,9 +141,14 @@ typedef enum agjk_stop_reason {
      *  reported in agjk_result::iterations no step made progress and the gap is
      *  still above the tolerance (and, in absolute mode, above the rounding floor). */
     AGJK_STOP_NO_PROGRESS = 2,
-    /** Relative mode: the certified interval, rounding included, is wider than
-     *  the relative accuracy asked; double precision cannot certify it for a
-     *  distance this small compared with the shapes' size. */
+    /** The solver met the tolerance (or its floor), but the certified
+     *  interval, rounding included, is wider than what was asked: in relative
+     *  mode, than the relative accuracy (double precision cannot certify it
+     *  for a distance this small compared with the shapes' size); in either
+     *  mode, when the active set's own point, which gives the upper bound,
+     *  lies off the iterate by more than rounding (an ill-conditioned
+     *  projection) and the interval it widens meets neither the tolerance
+     *  nor the floating-point floor. */
     AGJK_STOP_BELOW_PRECISION = 3
 } agjk_stop_reason;
 
