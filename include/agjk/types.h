@@ -196,9 +196,12 @@ typedef struct agjk_options {
     agjk_tolerance_mode tolerance_mode;
     /** Tolerance on the duality gap, > 0 and finite; see agjk_tolerance_mode
      *  for units. Default 1e-8 (the paper's). In absolute mode a value below the
-     *  floating-point floor (g resolved to about 2 ||x|| * 4 eps * the size of
-     *  the problem) is raised to that floor; result.gap and result.bound tell
-     *  what was reached. */
+     *  floating-point floor is raised to that floor: g = 2 <x, x - s> (s the
+     *  support point in direction x) is resolved only to about
+     *  2 (||x|| + ||x - s||) * 4 eps * the size of the problem (x and s each
+     *  carry that rounding), which for shapes much closer than their size
+     *  (||x|| << ||x - s||) lies far above 2 ||x|| * 4 eps * size; result.gap
+     *  and result.bound tell what was reached. */
     double tolerance;
     /** Iteration cap, >= 1. Default 1000 (the paper's benchmark setting). */
     int32_t max_iterations;
