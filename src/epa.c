@@ -531,18 +531,25 @@ static int nearest_face(epa_state *st, double *proved) {
     return best;
 }
 
-/* Whether [lower, upper] (depth, with vertex noise) meets the target. */
+/* Whether [lower, upper] (depth, with vertex noise) meets the target, as
+ * agjk_signed_distance will judge the signed interval it makes of it: the
+ * margins subtracted and its own rounding allowances added (bounded above
+ * here), against the final floor. So a polytope that stops here gives an
+ * answer whose final interval meets the promise. */
 static AGJK__ALWAYS_INLINE int width_met(const epa_state *st, const agjk__epa_input *in,
-                                         double noise, double floor) {
+                                         double noise) {
     double lo = st->lower - 2.0 * noise, up = st->upper + 2.0 * noise;
     if (!(up < INFINITY) || !(lo > -INFINITY)) return 0;
+    double margin = in->margin * st->md->scale;
+    double floor = agjk__signed_floor(st->md, margin);
     /* In absolute mode the target is at most max(sqrt(tolerance) (solver
      * units), floor): most iterations are decided here. */
     if (!in->relative && up - lo > st->width_cap && up - lo > floor) return 0;
-    double margin = in->margin * st->md->scale;
-    double target = agjk__epa_target(in->relative, in->tolerance, st->md->scale, -(up + margin),
-                                     -(lo + margin), in->relative ? 0.0 : floor);
-    return up - lo <= target;
+    double s_lo = -(up + margin), s_hi = -(lo + margin);
+    double big = fabs(s_lo) > fabs(s_hi) ? fabs(s_lo) : fabs(s_hi);
+    double allow = agjk__signed_allowance(margin, big, st->md->scale);
+    return agjk__signed_width_met(in->relative, in->tolerance, st->md->scale, s_lo - allow,
+                                  s_hi + allow, floor);
 }
 
 /* Barycentric coordinates (unnormalised, l[i] opposite vertex i) of the
@@ -651,7 +658,7 @@ void agjk__epa(agjk__minkowski *md, const agjk__epa_input *in, agjk__epa_output 
                 break;
             }
             if (proved > st.lower) st.lower = proved;
-            if (width_met(&st, in, agjk__epa_noise(md), agjk__epa_floor(md))) {
+            if (width_met(&st, in, agjk__epa_noise(md))) {
                 out->outcome = AGJK__EPA_CONVERGED;
                 met = 1;
                 break;
@@ -671,7 +678,7 @@ void agjk__epa(agjk__minkowski *md, const agjk__epa_input *in, agjk__epa_output 
             if (!(h - f->dist > f->err)) { /* sees(f, s->w) */
                 /* The face lies on D's boundary to rounding: the bounds are as
                  * tight as this polytope can make them. */
-                met = width_met(&st, in, agjk__epa_noise(md), agjk__epa_floor(md));
+                met = width_met(&st, in, agjk__epa_noise(md));
                 out->outcome = met ? AGJK__EPA_CONVERGED : AGJK__EPA_NO_PROGRESS;
                 break;
             }
@@ -712,7 +719,7 @@ void agjk__epa(agjk__minkowski *md, const agjk__epa_input *in, agjk__epa_output 
     if (out->estimate < out->lower) out->estimate = out->lower;
     out->normal = st.upper_n;
     if (met < 0 && out->outcome != AGJK__EPA_BAD_SUPPORT)
-        met = width_met(&st, in, agjk__epa_noise(md), agjk__epa_floor(md));
+        met = width_met(&st, in, agjk__epa_noise(md));
     out->converged = out->outcome != AGJK__EPA_BAD_SUPPORT && met;
     if (out->converged && out->outcome != AGJK__EPA_FLAT) out->outcome = AGJK__EPA_CONVERGED;
     out->support_calls = st.support_calls;

@@ -145,6 +145,46 @@ static inline double agjk__epa_target(int relative, double tolerance, double sca
 /* Floating-point floor of the interval width for the problem md (solver units). */
 double agjk__epa_floor(const agjk__minkowski *md);
 
+/* The floor of the signed distance's final interval, in DBL_EPSILON of the
+ * problem's size: the largest coordinates of the cores' points met
+ * (md->magnitude, |a| + |b| in max norm) plus the offset of the frames plus
+ * the margins. EPA's and GJK's own floor on the cores' interval is 1024
+ * (agjk__epa_floor, 256 noise); the 16 more cover what agjk_signed_distance
+ * adds to it afterwards, the rounding of the margins' sum and subtraction
+ * (4 eps (margin + |s|) over both ends) and of the change of units (an ulp
+ * of |s| at each end), with |s| at most sqrt(3) times the size. Stated in
+ * agjk/penetration.h. */
+#define AGJK__SIGNED_FLOOR_EPS 1040.0
+
+/* That floor in solver units, for a margin sum margin_s in solver units. */
+static inline double agjk__signed_floor(const agjk__minkowski *md, double margin_s) {
+    return AGJK__SIGNED_FLOOR_EPS * DBL_EPSILON *
+           (md->magnitude + md->translation_size + margin_s);
+}
+
+/* An upper bound, per end, on what agjk_signed_distance adds to a signed
+ * interval with ends of magnitude at most big after the cores' bounds
+ * (solver units, margin sum margin_s): twice widen_for_margins' (2 eps
+ * (margin + |s|)), and when the units change an ulp of |s| in the caller's
+ * units, subnormal ones included (widen_after_rescale). */
+static inline double agjk__signed_allowance(double margin_s, double big, double scale) {
+    double a = margin_s > 0.0 ? 4.0 * DBL_EPSILON * (margin_s + big) : 0.0;
+    if (scale != 1.0) a += 2.0 * DBL_EPSILON * big + 2.0 * 0x1p-1074 * scale;
+    return a;
+}
+
+/* Whether a signed interval [s_lo, s_hi] (units whose squared tolerance is
+ * tolerance * scale^2) meets the width agjk/penetration.h promises:
+ * relative mode tolerance / 2 * min |s| over the interval (0 when it holds
+ * 0), absolute mode min(sqrt(tolerance), tolerance / (2 max |s|)) raised to
+ * floor. */
+static inline int agjk__signed_width_met(int relative, double tolerance, double scale,
+                                         double s_lo, double s_hi, double floor) {
+    double target = agjk__epa_target(relative, tolerance, scale, s_lo, s_hi,
+                                     relative ? 0.0 : floor);
+    return s_hi - s_lo <= target;
+}
+
 /* Error scale of a computed point of D (as the solver's), solver units. */
 double agjk__epa_noise(const agjk__minkowski *md);
 

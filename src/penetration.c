@@ -13,7 +13,7 @@
 typedef struct gjk_summary {
     int bad_support;
     int intersecting;     /* the origin is in the final simplex */
-    int converged;        /* the tolerance was met (absolute: or its floor) */
+    int converged;        /* GJK met its tolerance (absolute: or its floor) */
     double core_upper;    /* certified upper bound on the core distance (solver units) */
     double core_lower;    /* certified lower bound on the core distance (solver units) */
     agjk_vec3 x;          /* final iterate */
@@ -53,7 +53,6 @@ static void run_gjk(agjk__minkowski *md, agjk__solve_input *in, agjk__solve_outp
     agjk__core_bounds_of(out, &cb);
     g->core_lower = cb.lower;
     g->core_upper = cb.upper;
-    if (cb.inexact) g->converged = 0;
     g->toward_x = cb.toward_x;
     g->normal = cb.normal;
 }
@@ -86,6 +85,19 @@ static void widen_for_margins(agjk_signed_result *r, double margin) {
     r->upper += 2.0 * DBL_EPSILON * (margin + fabs(r->upper));
 }
 
+/* Whether the final interval (caller's units, every allowance added) meets
+ * the width agjk/penetration.h promises: what decides between a verdict and
+ * NOT_CONVERGED, whatever GJK's or EPA's own stopping test said. */
+static int final_width_met(const agjk_signed_result *r, const agjk__minkowski *md, int relative,
+                           double tolerance, double margin) {
+    double floor = agjk__signed_floor(md, margin * md->scale);
+    /* In the caller's units (a power of two away), with room for the ulps
+     * widen_after_rescale may add among subnormal numbers (only there: a
+     * subnormal operand costs a microcode assist on x86). */
+    if (md->scale != 1.0) floor = floor / md->scale + 0x1p-1072;
+    return agjk__signed_width_met(relative, tolerance, 1.0, r->lower, r->upper, floor);
+}
+
 static agjk_status finish(agjk_signed_result *r, int converged) {
     if (!converged) return r->status = AGJK_STATUS_NOT_CONVERGED;
     if (r->lower > 0.0) return r->status = AGJK_STATUS_SEPARATED;
@@ -94,11 +106,13 @@ static agjk_status finish(agjk_signed_result *r, int converged) {
 }
 
 /* The answer when the cores are certified disjoint: the GJK distance, minus
- * the margins (as agjk_distance, with the margins subtracted). */
-static agjk_status separated_cores(agjk_signed_result *result, const gjk_summary *g,
-                                   const agjk__minkowski *md, const agjk_pose *pose_a,
-                                   double margin_a, double margin_b, double margin, int witness,
-                                   int converged) {
+ * the margins (as agjk_distance, with the margins subtracted). Returns
+ * whether its final interval meets the promised width; the status is left
+ * to the caller. */
+static int separated_cores(agjk_signed_result *result, const gjk_summary *g,
+                           const agjk__minkowski *md, const agjk_pose *pose_a, double margin_a,
+                           double margin_b, double margin, int witness, int relative,
+                           double tolerance) {
     double inv = 1.0 / md->scale;
     double core = v3_norm(g->x);
     result->signed_distance = core * inv - margin;
@@ -117,7 +131,7 @@ static agjk_status separated_cores(agjk_signed_result *result, const gjk_summary
         result->witness_b = agjk__to_world(pose_a, wb);
     }
     widen_after_rescale(result, md->scale);
-    return finish(result, converged);
+    return final_width_met(result, md, relative, tolerance, margin);
 }
 
 agjk_status agjk_signed_distance(const agjk_shape *a, const agjk_pose *pose_a,
@@ -147,22 +161,22 @@ agjk_status agjk_signed_distance(const agjk_shape *a, const agjk_pose *pose_a,
     result->hint_b = md.hint_b;
     if (g.bad_support) return invalid(result);
 
-    /* Cores certified disjoint: the GJK distance minus the margins. GJK's
-     * tolerance bounds the error relative to the core distance; with margins
-     * |signed distance| may be larger (deep overlap of the margins), so the
-     * width is checked against the signed distance and GJK resumed from its
-     * last iterate with a proportionally tighter tolerance (twice at most). */
+    /* Cores certified disjoint: the GJK distance minus the margins. The
+     * final interval, every rounding allowance added, decides: GJK's
+     * tolerance bounds the error relative to the core distance, while the
+     * promise is on the signed distance (larger with deep overlap of the
+     * margins) and the interval gains the margins' and the units' rounding.
+     * When it falls short, GJK is resumed from its last iterate with a
+     * proportionally tighter tolerance (twice at most): always with margins,
+     * and without them when GJK met its tolerance (else it is at a limit a
+     * restart will not pass: the floor, the cap, a stall). */
     for (int round = 0; !g.intersecting && g.core_lower > 0.0; ++round) {
-        double lo = g.core_lower - margin * md.scale, hi = g.core_upper - margin * md.scale;
-        double target = agjk__epa_target(in.relative, tolerance, md.scale, lo, hi,
-                                         in.relative ? 0.0 : agjk__epa_floor(&md));
-        /* Without margins, exactly agjk_distance's verdict; with margins, the
-         * certified width decides. */
-        int converged = margin == 0.0 ? g.converged : hi - lo <= target;
-        if (converged || margin == 0.0 || round == 2)
-            return separated_cores(result, &g, &md, pose_a, margin_a, margin_b, margin, witness,
-                                   converged);
-        in.tolerance *= 0.25 * target / (hi - lo);
+        int met = separated_cores(result, &g, &md, pose_a, margin_a, margin_b, margin, witness,
+                                  in.relative, tolerance);
+        if (met || round == 2 || !(margin > 0.0 || g.converged)) return finish(result, met);
+        double target = agjk__epa_target(in.relative, tolerance, 1.0, result->lower,
+                                         result->upper, 0.0);
+        in.tolerance *= 0.25 * target / (result->upper - result->lower);
         if (!(in.tolerance > 0.0)) in.tolerance = DBL_MIN;
         in.x0 = g.x; /* solver units: the scale is already set */
         run_gjk(&md, &in, &out, &g);
@@ -209,5 +223,6 @@ agjk_status agjk_signed_distance(const agjk_shape *a, const agjk_pose *pose_a,
         result->witness_b = agjk__to_world(pose_a, wb);
     }
     widen_after_rescale(result, md.scale);
-    return finish(result, eout.converged);
+    /* (EPA stopped on a width test that allowed for these widenings.) */
+    return finish(result, final_width_met(result, &md, in.relative, tolerance, margin));
 }

@@ -148,25 +148,45 @@ static AGJK__ALWAYS_INLINE agjk_status run_query(const agjk_shape *a, const agjk
     double gap = cb.gap, lower = cb.lower;
     /* At the floating-point floor an absolute tolerance counts as met (the
      * tolerance is documented to be raised to the floor); a relative one does
-     * not, since the relative accuracy it promises was not reached. */
-    int converged = !cb.inexact && (out.outcome == AGJK__CONVERGED ||
-                                    (out.outcome == AGJK__AT_FLOOR && !in.relative));
+     * not, since the relative accuracy it promises was not reached. Shapes
+     * within rounding of contact (AT_ROUNDING) are a contact in either mode. */
+    int at_rounding = out.outcome == AGJK__AT_ROUNDING;
+    int converged = out.outcome == AGJK__CONVERGED || at_rounding ||
+                    (out.outcome == AGJK__AT_FLOOR && !in.relative);
     double distance = cb.upper - md.margin;
     double low = lower - md.margin;
     if (distance < 0.0) distance = 0.0;
     if (low < 0.0) low = 0.0;
+    /* An inexact member point (farther from the origin than x by more than
+     * rounding) raised the upper end: the interval is wider than the gap
+     * showed, and counts only if it still holds what was promised. In the
+     * gap's terms, ||p||^2 - ||x*||^2 <= upper^2 - lower^2 (cores): within an
+     * absolute tolerance, or within the floor such a tolerance is raised to
+     * (gap_verdict's wide one: squared, 8 noise^2 (||x||^2 + ||x - s||^2)),
+     * which is also what "within rounding of contact" means. A relative
+     * tolerance away from contact: the width test below. */
+    if (converged && cb.inexact && (!in.relative || at_rounding)) {
+        double lo = lower > 0.0 ? lower : 0.0;
+        double spread = (cb.upper - lo) * (cb.upper + lo);
+        double tol = in.relative ? 0.0 : in.tolerance * md.scale * md.scale;
+        double floor2 = 8.0 * out.noise * out.noise * (cb.core * cb.core + out.xs2);
+        converged = spread <= tol || spread * spread <= floor2;
+    }
     /* Relative mode claims |distance - d*| <= d* tolerance / 2 only when the
      * whole certified interval, rounding included, shows it. */
-    if (converged && in.relative && !(distance - low <= 0.5 * in.tolerance * low))
+    if (converged && in.relative && !at_rounding &&
+        !(distance - low <= 0.5 * in.tolerance * low))
         converged = 0;
     agjk_status status;
-    if (out.outcome == AGJK__AT_ROUNDING && !cb.inexact)
+    if (at_rounding && converged)
         status = AGJK_STATUS_CONTACT_WITHIN_TOLERANCE;
     else if (converged)
         status = lower > agjk__minkowski_separation_level(&md)
                      ? AGJK_STATUS_SEPARATED : AGJK_STATUS_CONTACT_WITHIN_TOLERANCE;
     else
         status = AGJK_STATUS_NOT_CONVERGED;
+    /* An outcome that met the tolerance (or the floor) but whose certified
+     * interval does not show it: beyond what double precision certifies. */
     if (status == AGJK_STATUS_NOT_CONVERGED)
         result->stop_reason = out.outcome == AGJK__ITERATION_CAP ? AGJK_STOP_ITERATION_CAP
                               : out.outcome == AGJK__STALLED      ? AGJK_STOP_NO_PROGRESS

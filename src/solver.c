@@ -901,6 +901,7 @@ static AGJK__ALWAYS_INLINE void solve(agjk__minkowski *md, const agjk__solve_inp
     out->outcome = AGJK__ITERATION_CAP;
     out->gap = INFINITY;
     out->gap_valid = 0;
+    out->xs2 = 0.0;
     out->iterations = 1;
     out->support_calls = 0;
     out->momentum_stop = -1;
@@ -1057,6 +1058,7 @@ static AGJK__ALWAYS_INLINE void solve(agjk__minkowski *md, const agjk__solve_inp
                     if (overlap_after_all(&sv, out, &g, &s.w)) break;
                     out->gap = g;
                     out->gap_valid = 1;
+                    out->xs2 = v3_norm2(v3_sub(sv.x, s.w));
                     agjk__outcome v = gap_verdict(&sv, g, 0.0);
                     out->outcome = v == AGJK__CONVERGED ? v : AGJK__AT_FLOOR;
                     break;
@@ -1085,6 +1087,7 @@ static AGJK__ALWAYS_INLINE void solve(agjk__minkowski *md, const agjk__solve_inp
                     if (overlap_after_all(&sv, out, &g, &s.w)) break;
                     out->outcome = v;
                     out->gap = g; /* a true Frank-Wolfe gap: s = S_D(x) */
+                    out->xs2 = v3_norm2(v3_sub(sv.x, s.w));
                     break;
                 }
                 out->gap = g;
@@ -1200,6 +1203,7 @@ static AGJK__ALWAYS_INLINE void solve(agjk__minkowski *md, const agjk__solve_inp
             agjk_vec3 xs = v3_sub(sv.x, s.w);
             out->gap = 2.0 * v3_dot(sv.x, xs);
             out->gap_valid = 1;
+            out->xs2 = v3_norm2(xs);
             if (out->outcome != AGJK__AT_ROUNDING) {
                 agjk__outcome v = gap_verdict(&sv, out->gap, v3_norm2(xs));
                 if (v != AGJK__ITERATION_CAP && !overlap_after_all(&sv, out, &out->gap, &s.w))

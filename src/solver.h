@@ -225,6 +225,10 @@ typedef struct agjk__solve_output {
                             itself (adaptive method), else zero */
     double gap;          /* duality gap at x; valid when gap_valid */
     int gap_valid;
+    /* ||x - s||^2 for the support s that gave that gap, where the query
+     * ended on one (else 0): the measure of gap_verdict's wide floor, which
+     * query.c applies to an interval widened by an inexact member point. */
+    double xs2;
     double noise;        /* floating-point error scale of w, length units */
     int iterations;
     int support_calls;

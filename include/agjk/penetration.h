@@ -43,9 +43,14 @@ extern "C" {
 typedef struct agjk_signed_result {
     /** SEPARATED (certified: lower > 0), INTERSECTING (certified: upper < 0),
      *  CONTACT_WITHIN_TOLERANCE (the tolerance was met but the interval holds 0:
-     *  touching), NOT_CONVERGED (iteration cap, full polytope store, or
-     *  rounding stopped progress first: lower and upper are still certified),
-     *  INVALID_INPUT (as agjk_distance). */
+     *  touching), NOT_CONVERGED (the final interval, every rounding allowance
+     *  included, is wider than the tolerance asks: iteration cap, full
+     *  polytope store, rounding stopped progress first, or an accuracy beyond
+     *  what double precision certifies for this problem; lower and upper are
+     *  still certified), INVALID_INPUT (as agjk_distance). A verdict is given
+     *  exactly when the final interval meets the width asked (see
+     *  agjk_signed_distance), whether or not agjk_distance would give one on
+     *  the same shapes: its criterion is the gap, and its floor can be wider. */
     agjk_status status;
     /** Signed distance: the distance (margins included) when separated, minus
      *  the penetration depth when overlapping. It lies in [lower, upper].
@@ -91,12 +96,22 @@ typedef struct agjk_signed_result {
  * - AGJK_TOLERANCE_ABSOLUTE (length units squared, as for distances):
  *   width <= min(sqrt(tolerance), tolerance / (2 |signed_distance|)), the error
  *   agjk_distance certifies at that distance with that gap. The default 1e-8
- *   gives about 5e-7 at a depth of 0.01, 5e-8 at a depth of 0.1. A tolerance
- *   below the floating-point floor (about 1000 ulps of the problem's size) is
- *   raised to it.
- * - AGJK_TOLERANCE_RELATIVE (dimensionless): width <= tolerance / 2 *
- *   |signed_distance|; when double precision cannot reach it the status is
+ *   gives about 5e-7 at a depth of 0.01, 5e-8 at a depth of 0.1. A width
+ *   below the floating-point floor is raised to it: 1040 DBL_EPSILON (about
+ *   1000 ulps) times the problem's size, that is the largest coordinates of
+ *   the cores' support points (A's and B's added, in A's frame) plus the
+ *   largest coordinate of the offset between the frames plus the margins.
+ *   Where double precision cannot reach even that (the final gap of GJK
+ *   resolved only to agjk_distance's floor, much wider for shapes far closer
+ *   than their size, see agjk_options::tolerance), the status is
  *   AGJK_STATUS_NOT_CONVERGED with the interval reached.
+ * - AGJK_TOLERANCE_RELATIVE (dimensionless): width <= tolerance / 2 *
+ *   |signed_distance| (with the smallest |s| of the interval, 0 when it
+ *   holds 0); when double precision cannot reach it the status is
+ *   AGJK_STATUS_NOT_CONVERGED with the interval reached.
+ * The width is that of the final interval, after the margins and their
+ * rounding are added; |signed_distance| is taken at the interval's end
+ * farthest from 0 in absolute mode (the safe side).
  * `options->max_iterations` caps the GJK loop and, separately, the EPA loop.
  *
  * Degenerate cases (touching shapes, shapes whose difference is flat, such as

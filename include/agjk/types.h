@@ -141,9 +141,14 @@ typedef enum agjk_stop_reason {
      *  reported in agjk_result::iterations no step made progress and the gap is
      *  still above the tolerance (and, in absolute mode, above the rounding floor). */
     AGJK_STOP_NO_PROGRESS = 2,
-    /** Relative mode: the certified interval, rounding included, is wider than
-     *  the relative accuracy asked; double precision cannot certify it for a
-     *  distance this small compared with the shapes' size. */
+    /** The solver met the tolerance (or its floor), but the certified
+     *  interval, rounding included, is wider than what was asked: in relative
+     *  mode, than the relative accuracy (double precision cannot certify it
+     *  for a distance this small compared with the shapes' size); in either
+     *  mode, when the active set's own point, which gives the upper bound,
+     *  lies off the iterate by more than rounding (an ill-conditioned
+     *  projection) and the interval it widens meets neither the tolerance
+     *  nor the floating-point floor. */
     AGJK_STOP_BELOW_PRECISION = 3
 } agjk_stop_reason;
 
@@ -191,9 +196,12 @@ typedef struct agjk_options {
     agjk_tolerance_mode tolerance_mode;
     /** Tolerance on the duality gap, > 0 and finite; see agjk_tolerance_mode
      *  for units. Default 1e-8 (the paper's). In absolute mode a value below the
-     *  floating-point floor (g resolved to about 2 ||x|| * 4 eps * the size of
-     *  the problem) is raised to that floor; result.gap and result.bound tell
-     *  what was reached. */
+     *  floating-point floor is raised to that floor: g = 2 <x, x - s> (s the
+     *  support point in direction x) is resolved only to about
+     *  2 (||x|| + ||x - s||) * 4 eps * the size of the problem (x and s each
+     *  carry that rounding), which for shapes much closer than their size
+     *  (||x|| << ||x - s||) lies far above 2 ||x|| * 4 eps * size; result.gap
+     *  and result.bound tell what was reached. */
     double tolerance;
     /** Iteration cap, >= 1. Default 1000 (the paper's benchmark setting). */
     int32_t max_iterations;

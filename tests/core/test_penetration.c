@@ -750,6 +750,156 @@ START_TEST(nearest_face_search) {
 }
 END_TEST
 
+/* Quadruple precision, for exact truths below (the products of doubles are
+ * exact in it); sqrt by Newton's iteration from the double one, so that no
+ * quadmath library is needed. Where the compiler has no such type, the
+ * test that needs it is skipped. */
+#if defined(__SIZEOF_FLOAT128__)
+__extension__ typedef __float128 quad;
+#define HAVE_QUAD 1
+#elif LDBL_MANT_DIG >= 113
+typedef long double quad;
+#define HAVE_QUAD 1
+#endif
+
+#ifdef HAVE_QUAD
+static quad qsqrt(quad v) {
+    if (v <= 0) return 0;
+    quad r = sqrt((double)v);
+    for (int i = 0; i < 3; i++) r = 0.5 * (r + v / r);
+    return r;
+}
+
+/* Distance from (rho, z), rho >= 0, to the segment [p, q] of the plane. */
+static quad seg2_distance(quad rho, quad z, quad p0, quad p1, quad q0, quad q1) {
+    quad e0 = q0 - p0, e1 = q1 - p1, t = ((rho - p0) * e0 + (z - p1) * e1) / (e0 * e0 + e1 * e1);
+    if (t < 0) t = 0;
+    if (t > 1) t = 1;
+    quad d0 = rho - (p0 + t * e0), d1 = z - (p1 + t * e1);
+    return qsqrt(d0 * d0 + d1 * d1);
+}
+
+/* A verdict only when the final interval, every rounding allowance added,
+ * has the width penetration.h promises; NOT_CONVERGED otherwise. Taking
+ * agjk_distance's "converged" as its own (no margins) gave SEPARATED with
+ * intervals 2e8 times
+ * the relative width asked (a point 6.9e-16 from a disc, a point 3.3e-8 from
+ * a segment: agjk_distance itself says NOT_CONVERGED there), and in absolute
+ * mode 86 000 ulps of the problem's size wide at the floating-point floor (a
+ * point 0.034 from a cone of radius 12 836); judging the width before the
+ * margins' rounding is added gave INTERSECTING for spheres (case 4). Each
+ * interval must also hold the exact distance, computed in quadruple
+ * precision. */
+START_TEST(verdict_only_when_width_met) {
+    static const agjk_method methods[] = {
+        AGJK_METHOD_GJK,    AGJK_METHOD_NESTEROV,    AGJK_METHOD_NESTEROV_NORMALIZED,
+        AGJK_METHOD_POLYAK, AGJK_METHOD_FRANK_WOLFE, AGJK_METHOD_ADAPTIVE};
+    agjk_shape pt;
+    TU_CHECK_INT_EQ(agjk_shape_point(&pt), AGJK_STATUS_OK);
+    agjk_pose I = ident();
+    /* 1: a point 6.9e-16 below a disc (a cone of zero height) of radius
+     * 1.9e-3: its offset from the axis (6.6e-16) is inside the disc, so the
+     * distance is |z|, exactly. */
+    agjk_cone disc = {0x1.e75a42f598acp-10, 0};
+    agjk_shape sdisc;
+    TU_CHECK_INT_EQ(agjk_shape_cone(&sdisc, &disc), AGJK_STATUS_OK);
+    agjk_pose p1 = {{{0x1.73fa017918d0cp-2, -0x1.cf91e0c96e3aap-1, -0x1.c1fbf562ede3cp-3},
+                     {-0x1.a326fce38438cp-4, 0x1.90a5c7be34894p-3, -0x1.f35db5f763845p-1},
+                     {0x1.da236e03fbe2dp-1, 0x1.81d25ce0c15fep-2, -0x1.61b5afa98704p-6}},
+                    {-0x1.76b2057722971p-53, -0x1.7321d81008e03p-51, -0x1.8f05b0ee7e1a8p-51}};
+    double d1 = fabs(p1.translation.z);
+    ck_assert(hypot(p1.translation.x, p1.translation.y) < disc.radius);
+    /* 2: a point 3.3e-8 from a segment (a box 0 x 0 x h). */
+    agjk_box segbox = {{0, 0, 0x1.19f49e409dcp+0}};
+    agjk_shape sseg;
+    TU_CHECK_INT_EQ(agjk_shape_box(&sseg, &segbox), AGJK_STATUS_OK);
+    agjk_pose p2 = {{{-0x1.4d249fb2f6818p-2, 0x1.e0e324d106c5ep-1, 0x1.c0aad13169cf8p-4},
+                     {0x1.27cc4cad6e1ep-1, 0x1.2813569e457bp-2, -0x1.86cf520502a8p-1},
+                     {-0x1.7f46f91c9bbaep-1, -0x1.7af8dd3fb1dc8p-3, -0x1.45fc329e97d2cp-1}},
+                    {0x1.b3e7f2680b8a5p-1, 0x1.4edea326ce552p-1, 0x1.f77daed14da5p-3}};
+    agjk_pose q2 = {{{-0x1.436a2dd54171p-3, 0x1.3a96b52890161p-1, 0x1.8bc74c78bcae4p-1},
+                     {-0x1.4907e93dee78fp-3, -0x1.93a7143198d14p-1, 0x1.300b083a713ffp-1},
+                     {0x1.f2d6c8a9d6fe6p-1, -0x1.f24d57c02478p-6, 0x1.c92450be759ep-3}},
+                    {0, 0, 0}};
+    quad l2[3], d2sq = 0;
+    for (int i = 0; i < 3; i++) {
+        const double t[3] = {p2.translation.x, p2.translation.y, p2.translation.z};
+        l2[i] = 0;
+        for (int j = 0; j < 3; j++) l2[i] += (quad)q2.rotation[j][i] * t[j];
+    }
+    quad over = (l2[2] < 0 ? -l2[2] : l2[2]) - (quad)segbox.half_extents.z;
+    d2sq = l2[0] * l2[0] + l2[1] * l2[1] + (over > 0 ? over * over : 0);
+    double d2 = (double)qsqrt(d2sq);
+    /* 3: a point 0.034 from a cone of radius 12 836, half height 3959: in
+     * the cone's axial plane, the distance to the triangle apex (0, h), rim
+     * (r, -h), axis foot (0, -h). */
+    agjk_cone big = {0x1.91215959ba0a2p+13, 0x1.ef09cbf81f49fp+11};
+    agjk_shape scone;
+    TU_CHECK_INT_EQ(agjk_shape_cone(&scone, &big), AGJK_STATUS_OK);
+    agjk_pose pa = {{{-0x1.f36a4cf96bf2p-5, -0x1.dcad517a90cf1p-1, -0x1.7080ef175656dp-2},
+                     {0x1.acd4fe65c9b2cp-3, 0x1.5cc2956ee5f5p-2, -0x1.d54cada54e0acp-1},
+                     {0x1.f3ad1241c7366p-1, -0x1.0cc374d781596p-3, 0x1.64b92d0d87848p-3}},
+                    {0, 0, 0}};
+    agjk_pose pb = I;
+    pb.translation = tu_vec(-0x1.87464941dacb1p+8, 0x1.4ff99c07326a8p+10, 0x1.877a9940ae5b4p+12);
+    quad l3[3];
+    for (int i = 0; i < 3; i++) {
+        const double t[3] = {pb.translation.x, pb.translation.y, pb.translation.z};
+        l3[i] = 0;
+        for (int j = 0; j < 3; j++) l3[i] += (quad)pa.rotation[j][i] * t[j];
+    }
+    quad rho = qsqrt(l3[0] * l3[0] + l3[1] * l3[1]), r = big.radius, h = big.half_height;
+    ck_assert(!(l3[2] <= h && l3[2] >= -h && rho <= r * (h - l3[2]) / (2 * h))); /* outside */
+    quad e1 = seg2_distance(rho, l3[2], 0, h, r, -h), e2 = seg2_distance(rho, l3[2], 0, -h, r, -h);
+    double d3 = (double)(e1 < e2 ? e1 : e2);
+    /* The problem's size, bounded above: the cone's points lie within
+     * sqrt(r^2 + h^2) of its origin, the point at the offset. */
+    double size3 = hypot(big.radius, big.half_height) + tu_norm(pb.translation);
+
+    /* 4: margins. Spheres of radii 0.1 and 0.2, centres 1e-3 apart: the
+     * cores' interval is a few ulps of 1e-3 wide, but the margins' rounding,
+     * added afterwards, makes the final one about 5.5e-16 wide, more than a
+     * relative 1e-15 asks (1.5e-16): the width was judged before it was
+     * added, and the answer was INTERSECTING. */
+    agjk_shape s01, s02;
+    TU_CHECK_INT_EQ(agjk_shape_sphere(&s01, 0.1), AGJK_STATUS_OK);
+    TU_CHECK_INT_EQ(agjk_shape_sphere(&s02, 0.2), AGJK_STATUS_OK);
+    agjk_pose c4 = I;
+    c4.translation.x = 1e-3;
+    double d4 = (double)((quad)1e-3 - (quad)0.1 - (quad)0.2);
+
+    for (int m = 0; m < 6; m++) {
+        agjk_options o = agjk_default_options();
+        o.method = methods[m];
+        char what[96];
+        o.tolerance_mode = AGJK_TOLERANCE_RELATIVE;
+        o.tolerance = 1e-15;
+        agjk_signed_result rs = signed_query(&s01, &I, &s02, &c4, &o);
+        snprintf(what, sizeof what, "spheres, relative 1e-15, %s", agjk_method_name(o.method));
+        check_against(&rs, d4, d4, 1e-30, &o, 1.0, what);
+        o.tolerance_mode = AGJK_TOLERANCE_RELATIVE;
+        o.tolerance = 1e-10;
+        agjk_signed_result res = signed_query(&pt, &p1, &sdisc, &I, &o);
+        snprintf(what, sizeof what, "point and disc, relative 1e-10, %s", agjk_method_name(o.method));
+        check_against(&res, d1, d1, 0.0, &o, 1.0, what);
+        o.tolerance = 0x1.203af9ee75616p-50;
+        res = signed_query(&pt, &p2, &sseg, &q2, &o);
+        snprintf(what, sizeof what, "point and segment, relative 1e-15, %s",
+                 agjk_method_name(o.method));
+        check_against(&res, d2, d2, 1e-22, &o, 1.0, what);
+        o.tolerance_mode = AGJK_TOLERANCE_ABSOLUTE;
+        for (int k = 0; k < 2; k++) {
+            o.tolerance = k ? 1e-8 : 1e-300;
+            res = signed_query(&scone, &pa, &pt, &pb, &o);
+            snprintf(what, sizeof what, "point and cone, absolute %g, %s", o.tolerance,
+                     agjk_method_name(o.method));
+            check_against(&res, d3, d3, 1e-20, &o, size3, what);
+        }
+    }
+}
+END_TEST
+#endif
+
 int main(void) {
     Suite *s = suite_create("penetration");
     TU_ADD(s, nearest_face_search);
@@ -762,5 +912,8 @@ int main(void) {
     TU_ADD(s, four_point_starts);
     TU_ADD(s, degenerate_and_capped);
     TU_ADD(s, margin_rounding);
+#ifdef HAVE_QUAD
+    TU_ADD(s, verdict_only_when_width_met);
+#endif
     return tu_run_suite(s);
 }

@@ -489,6 +489,77 @@ START_TEST(frank_wolfe_drift_bounded) {
 }
 END_TEST
 
+/* Two segments crossing 8.07e-16 apart (a box of zero width and height, a
+ * capsule of zero radius; the pose found by a review's fuzzer): Nesterov
+ * with normalized directions ends within rounding of contact on a sliver
+ * whose member point lies 3 noise from the origin, farther than x. That
+ * widens the interval to [0, 7.7e-15], which still meets any absolute
+ * tolerance (its squared width is far below 1e-8, and below the floor that
+ * 1e-300 is raised to): the answer is contact within tolerance, as the
+ * other methods give, not NOT_CONVERGED with a stop reason of relative mode.
+ * Exact distance of the two lines in quadruple precision (the closest points
+ * lie inside both segments). */
+#ifdef HAVE_QUAD
+START_TEST(inexact_member_point_meets_tolerance) {
+    agjk_box seg_a = {{0, 0, 0x1.f4fa278e3a321p-1}};
+    agjk_capsule seg_b = {0, 0x1.4cb6e581a7cf9p-1};
+    agjk_shape sa, sb;
+    TU_CHECK_INT_EQ(agjk_shape_box(&sa, &seg_a), AGJK_STATUS_OK);
+    TU_CHECK_INT_EQ(agjk_shape_capsule(&sb, &seg_b), AGJK_STATUS_OK);
+    agjk_pose pa = tu_pose_identity();
+    agjk_pose pb = {{{-0x1.25d509fd16b7p-2, 0x1.765f7def18b4bp-1, 0x1.3cdde03bf519cp-1},
+                     {-0x1.8737378d4005dp-1, -0x1.20f3a3fb53f78p-1, 0x1.4001e5b0cd282p-2},
+                     {0x1.27d21fd7e97bcp-1, -0x1.88681b6c474bap-2, 0x1.70f820b7bd4a8p-1}},
+                    {-0x1.f9adecdd536bfp-49, -0x1.f3f0e26dffdfp-51, -0x1.4c14f4f335771p-4}};
+    /* A: the z axis, |z| <= ha. B: t + s u, u B's local z axis in A's frame
+     * (its rotation's third column), |s| <= hb. */
+    quad u[3] = {pb.rotation[0][2], pb.rotation[1][2], pb.rotation[2][2]};
+    quad t[3] = {pb.translation.x, pb.translation.y, pb.translation.z};
+    quad n[3] = {-u[1], u[0], 0}; /* e_z x u */
+    quad nn = n[0] * n[0] + n[1] * n[1];
+    quad tn = t[0] * n[0] + t[1] * n[1];
+    quad exact2 = tn * tn / nn; /* squared distance of the two lines */
+    /* Their closest points: s = -<t, u_perp> / |u_perp|^2 (u_perp the part of
+     * u across z), z = t_z + s u_z; both within the segments. */
+    quad s = -(t[0] * u[0] + t[1] * u[1]) / nn, z = t[2] + s * u[2];
+    ck_assert(s > -0x1.4cb6e581a7cf9p-1 && s < 0x1.4cb6e581a7cf9p-1);
+    ck_assert(z > -0x1.f4fa278e3a321p-1 && z < 0x1.f4fa278e3a321p-1);
+    ck_assert(exact2 > 0x1p-102 && exact2 < 0x1p-100); /* 8.07e-16 apart */
+    static const agjk_method methods[] = {
+        AGJK_METHOD_GJK,    AGJK_METHOD_NESTEROV,    AGJK_METHOD_NESTEROV_NORMALIZED,
+        AGJK_METHOD_POLYAK, AGJK_METHOD_FRANK_WOLFE, AGJK_METHOD_ADAPTIVE};
+    double tolerances[2] = {1e-8, 1e-300};
+    for (int m = 0; m < 6; m++)
+        for (int k = 0; k < 2; k++) {
+            agjk_options o = agjk_default_options();
+            o.method = methods[m];
+            o.tolerance = tolerances[k];
+            agjk_result r;
+            agjk_status st = agjk_distance(&sa, &pa, &sb, &pb, &o, &r);
+            TU_ENSURE(st == AGJK_STATUS_CONTACT_WITHIN_TOLERANCE || st == AGJK_STATUS_SEPARATED,
+                      "%s, tolerance %g: %s (stop reason %d), distance %g", agjk_method_name(o.method),
+                      o.tolerance, agjk_status_string(st), r.stop_reason, r.distance);
+            TU_CHECK_INT_EQ(r.stop_reason, AGJK_STOP_NONE);
+            /* The interval holds the exact distance, and its squared upper end
+             * is within the tolerance or the floating-point floor, 2 (||x|| +
+             * ||x - s||) 4 eps size, below 64 eps here (the problem's size,
+             * half lengths plus offset, is below 1.8, and ||x - s|| below 3.4). */
+            quad up = r.distance, lo = (quad)r.distance - r.bound;
+            TU_ENSURE(up * up >= exact2 && (lo <= 0 || lo * lo <= exact2),
+                      "%s: [%g, %g] misses the exact distance", agjk_method_name(o.method),
+                      r.distance - r.bound, r.distance);
+            TU_ENSURE(r.distance * r.distance <= o.tolerance + 64 * DBL_EPSILON,
+                      "%s: distance %g", agjk_method_name(o.method), r.distance);
+            /* agjk_collide shares the verdict. */
+            st = agjk_collide(&sa, &pa, &sb, &pb, &o, &r);
+            TU_ENSURE(st == AGJK_STATUS_CONTACT_WITHIN_TOLERANCE || st == AGJK_STATUS_SEPARATED,
+                      "collide, %s, tolerance %g: %s (stop reason %d)", agjk_method_name(o.method),
+                      o.tolerance, agjk_status_string(st), r.stop_reason);
+        }
+}
+END_TEST
+#endif
+
 int main(void) {
     Suite *s = suite_create("verdicts");
     TU_ADD(s, point_facing_cube_face);
@@ -498,5 +569,8 @@ int main(void) {
     TU_ADD(s, point_beside_ellipsoid_needle);
     TU_ADD(s, shallow_overlap_decided_cold);
     TU_ADD(s, frank_wolfe_drift_bounded);
+#ifdef HAVE_QUAD
+    TU_ADD(s, inexact_member_point_meets_tolerance);
+#endif
     return tu_run_suite(s);
 }
