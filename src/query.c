@@ -169,7 +169,9 @@ static AGJK__ALWAYS_INLINE agjk_status run_query(const agjk_shape *a, const agjk
         double lo = lower > 0.0 ? lower : 0.0;
         double spread = (cb.upper - lo) * (cb.upper + lo);
         double tol = in.relative ? 0.0 : in.tolerance * md.scale * md.scale;
-        double floor2 = 8.0 * out.noise * out.noise * (cb.core * cb.core + out.xs2);
+        double noise2 = out.noise * out.noise;
+        double floor2 = out.xs2 > 0.0 ? 8.0 * noise2 * (cb.core * cb.core + out.xs2)
+                                      : 4.0 * noise2 * cb.core * cb.core; /* (as gap_verdict) */
         converged = spread <= tol || spread * spread <= floor2;
     }
     /* Relative mode claims |distance - d*| <= d* tolerance / 2 only when the
