@@ -9,8 +9,13 @@
  * Hill climbing walks from the hint vertex to a neighbour with a larger
  * <direction, vertex> until none is larger. On the edge graph of a convex
  * polytope a vertex with no better neighbour is a global maximiser (the
- * simplex-method argument), so the walk is exact, and with a coherent hint
- * (the previous query's vertex) it visits only a few vertices instead of all.
+ * simplex-method argument), and with a coherent hint (the previous query's
+ * vertex) the walk visits only a few vertices instead of all. In floating
+ * point the walk's last vertex is then certified against rounding: each of
+ * its edges must lead down beyond the rounding of the comparison (an edge
+ * far shorter than the coordinates can gain less than that rounding); ties
+ * within rounding are followed, and the walk goes on where an edge rises,
+ * so the support point is as good as a scan's.
  *
  * Input: the hull's vertices (every one an extreme point, e.g. the `vertices`
  * of Qhull's output renumbered 0..n-1) and its triangles, as three vertex
