@@ -17,13 +17,12 @@
  * Usually by the walk's own last pass (climb_clear): every neighbour's
  * computed <d, u> lies below v's by more than the rounding of the two, which
  * climb_step bounds as it goes (3 eps of sum |d_i u_i|). Otherwise edge by
- * edge (vertex_certified): each gain <d, u - v>, computed from the edge so
- * that its rounding scales with the edge, must be <= 0 beyond that rounding,
- * or exactly 0 (a tie: every term of the sum is). An edge within rounding of
- * 0 (GJK's last directions are orthogonal to an edge or a face), or rising,
- * sends the answer to climb_settle: edges within rounding are followed to
- * the vertices that tie with v, and the climb goes on where an edge rises; a
- * scan is its last resort. The bound in climb_step costs the climb about a
+ * edge (climb_settle, plateau_best): each gain <d, u - v>, computed from the
+ * edge so that its rounding scales with the edge, must be <= 0 beyond that
+ * rounding, or exactly 0 (a tie: every term of the sum is). Edges within
+ * rounding of 0 (GJK's last directions are orthogonal to an edge or a face)
+ * are followed to the vertices that tie with v, and the climb goes on where
+ * an edge rises; a scan is the last resort. The bound in climb_step costs the climb about a
  * quarter of its time on the benchmark's hulls (README). */
 #include "shape_common.h"
 
@@ -114,8 +113,7 @@ static inline int climb_step(climb *c) {
  * 3 eps of sum |d_i x_i| (a few eps more here cover the test's own
  * rounding); climb_step keeps the largest <d, u> plus that allowance. The
  * vertices left undecided (ties, and the near-ties GJK's last directions
- * give, orthogonal to an edge or a face) go to vertex_certified and
- * climb_settle. */
+ * give, orthogonal to an edge or a face) go to climb_settle. */
 static inline int climb_clear(const climb *c) {
     agjk_vec3 d = c->d, q = c->v[c->current];
     double own = fabs(d.x * q.x) + fabs(d.y * q.y) + fabs(d.z * q.z);
@@ -145,17 +143,8 @@ static inline int edge_class(agjk_vec3 d, agjk_vec3 e) {
     return tie ? EDGE_DOWN : EDGE_FLAT;
 }
 
-/* Whether every edge of vertex i goes down (edge_class): then i is a global
- * maximiser, certified. */
-static inline int vertex_certified(const agjk_polytope *p, agjk_vec3 d, int i) {
-    agjk_vec3 at = p->vertices[i];
-    int ok = 1;
-    for (int e = p->neighbor_offsets[i]; e < p->neighbor_offsets[i + 1]; ++e)
-        ok &= edge_class(d, v3_sub(p->vertices[p->neighbors[e]], at)) == EDGE_DOWN;
-    return ok;
-}
-
-/* A climb's final vertex that vertex_certified could not certify: some edge
+/* A climb's final vertex that climb_clear could not certify: every edge
+ * going down (the vertex is returned), or some edge
  * is flat (GJK's directions end orthogonal to an edge or a face of the
  * polytope, so ties within rounding are common near convergence) or goes up
  * (a rise the rounded comparison of <d, u> with <d, v> missed). The flat
@@ -222,11 +211,6 @@ static AGJK__NOINLINE void climb_settle(const agjk_polytope *p, agjk_vec3 d, int
         }
         current = c.current;
         cut = c.moves == c.limit;
-        if (!cut && vertex_certified(p, d, current)) {
-            *hint = current;
-            *out = p->vertices[current];
-            return;
-        }
     }
     polytope_scan(p, d, out, hint);
 }
@@ -234,7 +218,7 @@ static AGJK__NOINLINE void climb_settle(const agjk_polytope *p, agjk_vec3 d, int
 /* The climb's final vertex into *out and *hint, certified (climb_settle). */
 static inline void climb_answer(const agjk_polytope *p, agjk_vec3 d, int current, int cut,
                                 int clear, agjk_vec3 *out, int *hint) {
-    if (!cut && (clear || vertex_certified(p, d, current))) {
+    if (!cut && clear) {
         *hint = current;
         *out = p->vertices[current];
         return;
