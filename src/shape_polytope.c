@@ -66,7 +66,8 @@ typedef struct climb {
     /* Over the neighbours of the current vertex tested so far: the largest
      * <d, u> plus a bound on its rounding (climb_clear). */
     double near;
-    int current, e, end, moves, limit;
+    int current, e, end;
+    int left; /* moves left: vertex_count at most */
 } climb;
 
 static inline void climb_begin(climb *c, const agjk_polytope *p, agjk_vec3 d, int hint) {
@@ -78,8 +79,7 @@ static inline void climb_begin(climb *c, const agjk_polytope *p, agjk_vec3 d, in
     c->current_dot = v3_dot(d, c->v[c->current]);
     c->e = c->offsets[c->current];
     c->end = c->offsets[c->current + 1];
-    c->moves = 0;
-    c->limit = p->vertex_count;
+    c->left = p->vertex_count;
     c->near = -INFINITY;
 }
 
@@ -96,7 +96,7 @@ static inline int climb_step(climb *c) {
         c->current_dot = dot;
         c->current = u;
         c->near = -INFINITY;
-        if (++c->moves == c->limit) return 0;
+        if (--c->left == 0) return 0;
         c->e = c->offsets[u];
         c->end = c->offsets[u + 1];
     } else {
@@ -210,7 +210,7 @@ static AGJK__NOINLINE void climb_settle(const agjk_polytope *p, agjk_vec3 d, int
         while (climb_step(&c)) {
         }
         current = c.current;
-        cut = c.moves == c.limit;
+        cut = c.left == 0;
     }
     polytope_scan(p, d, out, hint);
 }
@@ -231,7 +231,7 @@ static void polytope_climb(const agjk_polytope *p, agjk_vec3 d, agjk_vec3 *out, 
     climb_begin(&c, p, d, *hint);
     while (climb_step(&c)) {
     }
-    climb_answer(p, d, c.current, c.moves == c.limit, climb_clear(&c), out, hint);
+    climb_answer(p, d, c.current, c.left == 0, climb_clear(&c), out, hint);
 }
 
 static int climbs(const agjk_polytope *p) {
@@ -272,8 +272,8 @@ void agjk__polytope_pair_support(const void *data_a, const agjk_vec3 *direction_
     }
     while (run_a) run_a = climb_step(&a);
     while (run_b) run_b = climb_step(&b);
-    int current_a = a.current, cut_a = a.moves == a.limit, clear_a = climb_clear(&a);
-    int current_b = b.current, cut_b = b.moves == b.limit, clear_b = climb_clear(&b);
+    int current_a = a.current, cut_a = a.left == 0, clear_a = climb_clear(&a);
+    int current_b = b.current, cut_b = b.left == 0, clear_b = climb_clear(&b);
     climb_answer(pa, *direction_a, current_a, cut_a, clear_a, out_a, hint_a);
     climb_answer(pb, *direction_b, current_b, cut_b, clear_b, out_b, hint_b);
 }
