@@ -23,6 +23,7 @@
 #include "check_main.h"
 #include "ref_depth.h"
 #include "testutil.h"
+#include "quad.h"
 #include "../../src/epa.h"
 #include "../../src/query_setup.h"
 
@@ -750,26 +751,8 @@ START_TEST(nearest_face_search) {
 }
 END_TEST
 
-/* Quadruple precision, for exact truths below (the products of doubles are
- * exact in it); sqrt by Newton's iteration from the double one, so that no
- * quadmath library is needed. Where the compiler has no such type, the
- * test that needs it is skipped. */
-#if defined(__SIZEOF_FLOAT128__)
-__extension__ typedef __float128 quad;
-#define HAVE_QUAD 1
-#elif LDBL_MANT_DIG >= 113
-typedef long double quad;
-#define HAVE_QUAD 1
-#endif
-
+/* Exact truths below in quadruple precision (tests/common/quad.h). */
 #ifdef HAVE_QUAD
-static quad qsqrt(quad v) {
-    if (v <= 0) return 0;
-    quad r = sqrt((double)v);
-    for (int i = 0; i < 3; i++) r = 0.5 * (r + v / r);
-    return r;
-}
-
 /* Distance from (rho, z), rho >= 0, to the segment [p, q] of the plane. */
 static quad seg2_distance(quad rho, quad z, quad p0, quad p1, quad q0, quad q1) {
     quad e0 = q0 - p0, e1 = q1 - p1, t = ((rho - p0) * e0 + (z - p1) * e1) / (e0 * e0 + e1 * e1);

@@ -677,6 +677,22 @@ static int short_edge_prism(double offset, double edge, agjk_vec3 *v, int32_t *t
     return 2 * n;
 }
 
+/* The exact distance (long double) from q to the prism's side polygon, the
+ * first `sides` vertices of v (q within the prism's height). */
+static long double polygon_distance(const agjk_vec3 *v, int sides, agjk_vec3 q) {
+    long double best = INFINITY;
+    for (int i = 0; i < sides; ++i) {
+        int j = (i + 1) % sides;
+        long double ax = v[i].x, ay = v[i].y, ex = (long double)v[j].x - ax,
+                    ey = (long double)v[j].y - ay;
+        long double qx = (long double)q.x - ax, qy = (long double)q.y - ay;
+        long double u = (qx * ex + qy * ey) / (ex * ex + ey * ey);
+        u = u < 0 ? 0 : (u > 1 ? 1 : u);
+        best = fminl(best, hypotl(qx - u * ex, qy - u * ey));
+    }
+    return best;
+}
+
 START_TEST(polytope_climb_short_edges) {
     /* The climb's support value against the exact maximum over the
      * vertices (long double: each product of two doubles to 64 bits), from
@@ -729,18 +745,7 @@ START_TEST(polytope_climb_short_edges) {
             agjk_shape_point(&point);
             agjk_pose ia = {{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}, {0, 0, 0}}, pb = ia;
             pb.translation = (agjk_vec3){offset + 1.0 + 1e5, 6.0, 0.0};
-            int sides = n / 2;
-            long double exact = INFINITY;
-            for (int i = 0; i < sides; ++i) {
-                int j = (i + 1) % sides;
-                long double ax = v[i].x, ay = v[i].y, ex = (long double)v[j].x - ax,
-                            ey = (long double)v[j].y - ay;
-                long double qx = (long double)pb.translation.x - ax,
-                            qy = (long double)pb.translation.y - ay;
-                long double u = (qx * ex + qy * ey) / (ex * ex + ey * ey);
-                u = u < 0 ? 0 : (u > 1 ? 1 : u);
-                exact = fminl(exact, hypotl(qx - u * ex, qy - u * ey));
-            }
+            long double exact = polygon_distance(v, n / 2, pb.translation);
             /* just inside, past the short edge: halfway between a and w */
             agjk_pose inside = ia;
             inside.translation = (agjk_vec3){offset + 1.0 - 0.6e-6, 0.4, 0.0};
@@ -791,17 +796,7 @@ START_TEST(polytope_climb_short_edges_swept) {
             double t = 1e-5 * pow(10.0, 2.0 * (k / 20) / 19.0);
             agjk_pose pb = ia;
             pb.translation = (agjk_vec3){offsets[oi] + 1.0 + gap, gap * t, 0.3};
-            long double exact = INFINITY;
-            for (int i = 0; i < sides; ++i) {
-                int j = (i + 1) % sides;
-                long double ax = v[i].x, ay = v[i].y, ex = (long double)v[j].x - ax,
-                            ey = (long double)v[j].y - ay;
-                long double qx = (long double)pb.translation.x - ax,
-                            qy = (long double)pb.translation.y - ay;
-                long double w = (qx * ex + qy * ey) / (ex * ex + ey * ey);
-                w = w < 0 ? 0 : (w > 1 ? 1 : w);
-                exact = fminl(exact, hypotl(qx - w * ex, qy - w * ey));
-            }
+            long double exact = polygon_distance(v, sides, pb.translation);
             for (int m = 0; m <= AGJK_METHOD_ADAPTIVE; ++m) {
                 agjk_options o = agjk_default_options();
                 o.method = (agjk_method)m;

@@ -28,6 +28,7 @@
 #include <math.h>
 #include <stdio.h>
 #include "core_checks.h"
+#include "quad.h"
 
 static const agjk_method all_methods[] = {AGJK_METHOD_GJK, AGJK_METHOD_NESTEROV,
                                           AGJK_METHOD_NESTEROV_NORMALIZED, AGJK_METHOD_POLYAK,
@@ -184,18 +185,10 @@ START_TEST(stop_reasons) {
 END_TEST
 
 /* Exact truth for a needle (a segment) and a box: their squared distance in
- * quadruple precision (113-bit significands: products of doubles are exact,
+ * quadruple precision (tests/common/quad.h: products of doubles are exact,
  * and the rounding of the frame changes is below 1e-30 of the needle's
  * length, far below the gaps tested). Where the compiler has no such type,
  * the test is skipped. */
-#if defined(__SIZEOF_FLOAT128__)
-__extension__ typedef __float128 quad;
-#define HAVE_QUAD 1
-#elif LDBL_MANT_DIG >= 113
-typedef long double quad;
-#define HAVE_QUAD 1
-#endif
-
 #ifdef HAVE_QUAD
 /* Squared distance from p (box frame) to the box of half extents h. */
 static quad box_distance2(const quad p[3], const double h[3]) {
