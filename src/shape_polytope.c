@@ -6,8 +6,9 @@
  * larger <d, v> until none is larger. On the edge graph of a convex polytope a
  * vertex with no better neighbour is a global maximiser (the simplex method's
  * optimality argument), and coherent directions make the walk a few steps
- * long. Each step strictly increases the computed <d, v>, so no vertex is
- * visited twice: the walk is bounded by the vertex count.
+ * long. Each step strictly increases the computed <d, v>, so a walk visits
+ * no vertex twice and is bounded by the vertex count (climb_settle resumes
+ * it a few times at most).
  *
  * In floating point "no better neighbour" is not enough: the rounding of
  * <d, v> grows with the coordinates, and an edge far shorter than them can
@@ -22,8 +23,9 @@
  * rounding, or exactly 0 (a tie: every term of the sum is). Edges within
  * rounding of 0 (GJK's last directions are orthogonal to an edge or a face)
  * are followed to the vertices that tie with v, and the climb goes on where
- * an edge rises; a scan is the last resort. The bound in climb_step costs the climb about a
- * quarter of its time on the benchmark's hulls (README). */
+ * an edge rises; a scan is the last resort. The bound in climb_step costs
+ * the walk about a quarter of its time on the benchmark's hulls
+ * (tools/bench/PERFORMANCE.md). */
 #include "shape_common.h"
 
 /* Below this many vertices a scan beats hill climbing (Coal uses 32; see the
@@ -54,7 +56,7 @@ static void polytope_scan(const agjk_polytope *p, agjk_vec3 d, agjk_vec3 *out, i
  * the next step's loads behind them: measured on 141-point hulls, about twice
  * the time for the same instruction count. The climb is a state (the
  * current vertex and its <d, v>, the neighbour list being read, the moves
- * made) advanced one neighbour test at a time, so that two climbs can be
+ * left) advanced one neighbour test at a time, so that two climbs can be
  * taken in turns (agjk__polytope_pair_support). */
 #define DOT_ROUNDING (8.0 * DBL_EPSILON)
 
@@ -143,11 +145,11 @@ static inline int edge_class(agjk_vec3 d, agjk_vec3 e) {
     return tie ? EDGE_DOWN : EDGE_FLAT;
 }
 
-/* A climb's final vertex that climb_clear could not certify: every edge
- * going down (the vertex is returned), or some edge
- * is flat (GJK's directions end orthogonal to an edge or a face of the
- * polytope, so ties within rounding are common near convergence) or goes up
- * (a rise the rounded comparison of <d, u> with <d, v> missed). The flat
+/* A climb's final vertex that climb_clear could not certify, edge by edge:
+ * every edge goes down (the vertex is returned), or some edge is flat
+ * (GJK's directions end orthogonal to an edge or a face of the polytope, so
+ * ties within rounding are common near convergence) or goes up (a rise the
+ * rounded comparison of <d, u> with <d, v> missed). The flat
  * edges are followed, PLATEAU_MAX vertices at most: if no vertex of that
  * plateau has an edge going up, the exact maximiser is among them (from any
  * vertex that is not a maximiser an edge rises exactly, and each such edge
