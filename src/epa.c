@@ -531,6 +531,14 @@ static int nearest_face(epa_state *st, double *proved) {
     return best;
 }
 
+AGJK__NOINLINE double agjk__signed_allowance_rescaled(double big, double scale) {
+    return 2.0 * DBL_EPSILON * big + 2.0 * 0x1p-1074 * scale;
+}
+
+AGJK__NOINLINE double agjk__signed_floor_rescaled(double floor, double scale) {
+    return floor / scale + 0x1p-1072;
+}
+
 /* Whether [lower, upper] (depth, with vertex noise) meets the target, as
  * agjk_signed_distance will judge the signed interval it makes of it: the
  * margins subtracted and its own rounding allowances added (bounded above

@@ -162,6 +162,16 @@ static inline double agjk__signed_floor(const agjk__minkowski *md, double margin
            (md->magnitude + md->translation_size + margin_s);
 }
 
+/* The part of agjk__signed_allowance for a change of units (scale != 1),
+ * and the final floor in the caller's units: each holds a subnormal
+ * constant, for the ulps among subnormal numbers, so each is out of line
+ * and called only when the units change. Inline, a compiler may evaluate
+ * it on both arms of the test (clang does), and on ordinary problems a
+ * subnormal operand costs a microcode assist on x86 (tests/core/
+ * test_subnormals.c). */
+double agjk__signed_allowance_rescaled(double big, double scale);
+double agjk__signed_floor_rescaled(double floor, double scale);
+
 /* An upper bound, per end, on what agjk_signed_distance adds to a signed
  * interval with ends of magnitude at most big after the cores' bounds
  * (solver units, margin sum margin_s): twice widen_for_margins' (2 eps
@@ -169,7 +179,7 @@ static inline double agjk__signed_floor(const agjk__minkowski *md, double margin
  * units, subnormal ones included (widen_after_rescale). */
 static inline double agjk__signed_allowance(double margin_s, double big, double scale) {
     double a = margin_s > 0.0 ? 4.0 * DBL_EPSILON * (margin_s + big) : 0.0;
-    if (scale != 1.0) a += 2.0 * DBL_EPSILON * big + 2.0 * 0x1p-1074 * scale;
+    if (scale != 1.0) a += agjk__signed_allowance_rescaled(big, scale);
     return a;
 }
 

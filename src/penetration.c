@@ -92,9 +92,9 @@ static int final_width_met(const agjk_signed_result *r, const agjk__minkowski *m
                            double tolerance, double margin) {
     double floor = agjk__signed_floor(md, margin * md->scale);
     /* In the caller's units (a power of two away), with room for the ulps
-     * widen_after_rescale may add among subnormal numbers (only there: a
-     * subnormal operand costs a microcode assist on x86). */
-    if (md->scale != 1.0) floor = floor / md->scale + 0x1p-1072;
+     * widen_after_rescale may add among subnormal numbers (agjk__signed_
+     * floor_rescaled: out of line, see epa.h). */
+    if (md->scale != 1.0) floor = agjk__signed_floor_rescaled(floor, md->scale);
     return agjk__signed_width_met(relative, tolerance, 1.0, r->lower, r->upper, floor);
 }
 
