@@ -1205,7 +1205,7 @@ static AGJK__ALWAYS_INLINE void solve(agjk__minkowski *md, const agjk__solve_inp
             out->gap_valid = 1;
             out->xs2 = v3_norm2(xs);
             if (out->outcome != AGJK__AT_ROUNDING) {
-                agjk__outcome v = gap_verdict(&sv, out->gap, v3_norm2(xs));
+                agjk__outcome v = gap_verdict(&sv, out->gap, out->xs2);
                 if (v != AGJK__ITERATION_CAP && !overlap_after_all(&sv, out, &out->gap, &s.w))
                     out->outcome = v;
             }
