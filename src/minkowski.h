@@ -76,6 +76,10 @@ typedef struct agjk__minkowski {
  * direction, B's ellipsoid point is formed in A's frame as in the loop (see
  * agjk__minkowski_support). */
 #define AGJK__SUPPORT_DIRECT_FIRST 3
+/* Through the shapes' pointers, as AGJK__SUPPORT_CALL, but two polytopes'
+ * climbs taken in turns (agjk__polytope_pair_support): the solver's rare
+ * supports (momentum switch-off, final certification), out of line. */
+#define AGJK__SUPPORT_CALL_PAIRED 4
 
 /* Solver units keep support points below this (2^100): sixth powers stay finite. */
 #define AGJK__SOLVER_SIZE_LIMIT 0x1p100
@@ -228,7 +232,7 @@ static AGJK__ALWAYS_INLINE agjk_vec3 agjk__shape_support(agjk__minkowski *md, ag
                                                          const void *data, agjk_vec3 d, int *hint,
                                                          int direct) {
 #if AGJK__DIRECT_SUPPORT
-    if (!direct) {
+    if (!direct || direct == AGJK__SUPPORT_CALL_PAIRED) {
         /* (the call below) */
     } else if (fn == agjk__box_support) {
         return agjk__box_point((const agjk_box *)data, d);

@@ -103,7 +103,7 @@ static AGJK__ALWAYS_INLINE int support(solver *sv, agjk_vec3 *d, double d2, agjk
     return in_slot;
 }
 static AGJK__NOINLINE void support_rare(solver *sv, agjk_vec3 *d, agjk__vertex *s) {
-    (void)support(sv, d, 0.0, s, AGJK__SUPPORT_CALL, NULL);
+    (void)support(sv, d, 0.0, s, AGJK__SUPPORT_CALL_PAIRED, NULL);
 }
 
 /* Checks a fresh support s in direction d: a bad callback output ends the
