@@ -215,6 +215,12 @@ __attribute__((weak)) void agjk__polytope_support(const void *, const agjk_vec3 
 __attribute__((weak)) void agjk__polytope_pair_support(const void *, const agjk_vec3 *,
                                                        agjk_vec3 *, int *, const void *,
                                                        const agjk_vec3 *, agjk_vec3 *, int *);
+__attribute__((weak)) void agjk__prepared_polytope_support(const void *, const agjk_vec3 *,
+                                                           agjk_vec3 *, int *);
+__attribute__((weak)) void agjk__prepared_polytope_pair_support(const void *, const agjk_vec3 *,
+                                                                agjk_vec3 *, int *, const void *,
+                                                                const agjk_vec3 *, agjk_vec3 *,
+                                                                int *);
 #else
 #define AGJK__DIRECT_SUPPORT 0
 #endif
@@ -352,15 +358,21 @@ static AGJK__ALWAYS_INLINE int agjk__minkowski_support(agjk__minkowski *md, agjk
     agjk_vec3 pa, pb, pair_b = v3(0.0, 0.0, 0.0);
     int paired = 0;
 #if AGJK__DIRECT_SUPPORT
-    /* Two polytopes: both supports in one call, two climbs taken in turns
-     * (agjk__polytope_pair_support; through copies, as below). Hulls of
+    /* Two polytopes, both plain or both prepared: both supports in one
+     * call, two climbs taken in turns (agjk__polytope_pair_support; through
+     * copies, as below). Hulls of
      * 141 points: one-support Boolean queries 133 -> 114 ns, close pairs
      * 600 -> 540, overlapping 612 -> 523. */
-    if (direct && md->support_a == agjk__polytope_support &&
-        md->support_b == agjk__polytope_support) {
+    if (direct && md->support_a == md->support_b &&
+        (md->support_a == agjk__polytope_support ||
+         md->support_a == agjk__prepared_polytope_support)) {
         agjk_vec3 da = na, dbc = db, qa, qb;
-        agjk__polytope_pair_support(md->data_a, &da, &qa, &md->hint_a, md->data_b, &dbc, &qb,
-                                    &md->hint_b);
+        if (md->support_a == agjk__polytope_support)
+            agjk__polytope_pair_support(md->data_a, &da, &qa, &md->hint_a, md->data_b, &dbc, &qb,
+                                        &md->hint_b);
+        else
+            agjk__prepared_polytope_pair_support(md->data_a, &da, &qa, &md->hint_a, md->data_b,
+                                                 &dbc, &qb, &md->hint_b);
         pa = qa;
         pair_b = qb;
         paired = 1;

@@ -25,7 +25,13 @@
  * are followed to the vertices that tie with v, and the climb goes on where
  * an edge rises; a scan is the last resort. The bound in climb_step costs
  * the walk about a quarter of its time on the benchmark's hulls
- * (tools/bench/PERFORMANCE.md). */
+ * (tools/bench/PERFORMANCE.md). A prepared polytope (agjk_polytope_prepare)
+ * carries a bound M on every vertex's coordinates, so that sum |d_i u_i| <=
+ * M sum |d_i| for every neighbour u at once: climb_step then keeps the
+ * plain largest <d, u>, and climb_clear adds that one allowance. */
+#include <string.h>
+
+#include "agjk/polytope.h"
 #include "shape_common.h"
 
 /* Below this many vertices a scan beats hill climbing (Coal uses 32; see the
@@ -66,13 +72,19 @@ typedef struct climb {
     agjk_vec3 d;
     double current_dot;
     /* Over the neighbours of the current vertex tested so far: the largest
-     * <d, u> plus a bound on its rounding (climb_clear). */
+     * <d, u>, plus a bound on its rounding unless the climb is `bounded`
+     * (climb_clear). */
     double near;
+    /* A bounded climb's bound on sum |d_i u_i| for every vertex u: sum |d_i|
+     * times the prepared polytope's coordinate bound. */
+    double far;
     int current, e, end;
     int left; /* moves left: vertex_count at most */
 } climb;
 
-static inline void climb_begin(climb *c, const agjk_polytope *p, agjk_vec3 d, int hint) {
+/* `bound`: the prepared polytope's coordinate bound (a bounded climb), or 0. */
+static inline void climb_begin(climb *c, const agjk_polytope *p, agjk_vec3 d, int hint,
+                               double bound) {
     c->v = p->vertices;
     c->offsets = p->neighbor_offsets;
     c->neighbors = p->neighbors;
@@ -83,12 +95,14 @@ static inline void climb_begin(climb *c, const agjk_polytope *p, agjk_vec3 d, in
     c->end = c->offsets[c->current + 1];
     c->left = p->vertex_count;
     c->near = -INFINITY;
+    c->far = (fabs(d.x) + fabs(d.y) + fabs(d.z)) * bound;
 }
 
 /* The next neighbour test: 0 once the climb has ended (no better
  * neighbour: a global maximiser, to be certified; or vertex_count moves
- * made, which only a graph that is not the hull's edge graph can take). */
-static inline int climb_step(climb *c) {
+ * made, which only a graph that is not the hull's edge graph can take).
+ * `bounded` (a constant at every call) leaves the rounding to c->far. */
+static AGJK__ALWAYS_INLINE int climb_step(climb *c, int bounded) {
     if (c->e == c->end) return 0;
     int u = c->neighbors[c->e];
     agjk_vec3 q = c->v[u];
@@ -102,7 +116,7 @@ static inline int climb_step(climb *c) {
         c->e = c->offsets[u];
         c->end = c->offsets[u + 1];
     } else {
-        double high = dot + DOT_ROUNDING * (fabs(px) + fabs(py) + fabs(pz));
+        double high = bounded ? dot : dot + DOT_ROUNDING * (fabs(px) + fabs(py) + fabs(pz));
         c->near = high > c->near ? high : c->near;
         ++c->e;
     }
@@ -113,12 +127,14 @@ static inline int climb_step(climb *c) {
  * computed <d, u> no larger than its own. Certified at once when each one
  * lies below by more than the rounding of the two: <d, x> is computed to
  * 3 eps of sum |d_i x_i| (a few eps more here cover the test's own
- * rounding); climb_step keeps the largest <d, u> plus that allowance. The
- * vertices left undecided (ties, and the near-ties GJK's last directions
+ * rounding); climb_step keeps the largest <d, u> plus that allowance, or
+ * for a bounded climb the largest <d, u>, whose allowance c->far covers.
+ * The vertices left undecided (ties, and the near-ties GJK's last directions
  * give, orthogonal to an edge or a face) go to climb_settle. */
-static inline int climb_clear(const climb *c) {
+static AGJK__ALWAYS_INLINE int climb_clear(const climb *c, int bounded) {
     agjk_vec3 d = c->d, q = c->v[c->current];
     double own = fabs(d.x * q.x) + fabs(d.y * q.y) + fabs(d.z * q.z);
+    if (bounded) own += c->far;
     return c->near < c->current_dot - DOT_ROUNDING * own - 0x1p-1000;
 }
 
@@ -206,10 +222,12 @@ static AGJK__NOINLINE void climb_settle(const agjk_polytope *p, agjk_vec3 d, int
             return;
         }
         if (best == PLATEAU_SCAN) break;
-        /* on from the vertex the rising edge leads to */
+        /* on from the vertex the rising edge leads to (its end is
+         * certified by plateau_best, not by climb_clear: bounded, for the
+         * cheaper step, with no bound) */
         climb c;
-        climb_begin(&c, p, d, -1 - best);
-        while (climb_step(&c)) {
+        climb_begin(&c, p, d, -1 - best, 0.0);
+        while (climb_step(&c, 1)) {
         }
         current = c.current;
         cut = c.left == 0;
@@ -228,25 +246,34 @@ static inline void climb_answer(const agjk_polytope *p, agjk_vec3 d, int current
     climb_settle(p, d, current, cut, out, hint);
 }
 
-static void polytope_climb(const agjk_polytope *p, agjk_vec3 d, agjk_vec3 *out, int *hint) {
-    climb c;
-    climb_begin(&c, p, d, *hint);
-    while (climb_step(&c)) {
-    }
-    climb_answer(p, d, c.current, c.left == 0, climb_clear(&c), out, hint);
-}
-
 static int climbs(const agjk_polytope *p) {
     return p->neighbor_offsets && p->vertex_count >= HILL_CLIMB_MIN_VERTICES;
 }
 
+/* One support: a climb (bounded by `bound` when `bounded`) or a scan. */
+static AGJK__ALWAYS_INLINE void polytope_support(const agjk_polytope *p, double bound,
+                                                 int bounded, agjk_vec3 d, agjk_vec3 *out,
+                                                 int *hint) {
+    if (!climbs(p)) {
+        polytope_scan(p, d, out, hint);
+        return;
+    }
+    climb c;
+    climb_begin(&c, p, d, *hint, bound);
+    while (climb_step(&c, bounded)) {
+    }
+    climb_answer(p, d, c.current, c.left == 0, climb_clear(&c, bounded), out, hint);
+}
+
 void agjk__polytope_support(const void *data, const agjk_vec3 *direction, agjk_vec3 *out,
                             int *hint) {
-    const agjk_polytope *p = (const agjk_polytope *)data;
-    if (climbs(p))
-        polytope_climb(p, *direction, out, hint);
-    else
-        polytope_scan(p, *direction, out, hint);
+    polytope_support((const agjk_polytope *)data, 0.0, 0, *direction, out, hint);
+}
+
+void agjk__prepared_polytope_support(const void *data, const agjk_vec3 *direction,
+                                     agjk_vec3 *out, int *hint) {
+    const agjk_prepared_polytope *pp = (const agjk_prepared_polytope *)data;
+    polytope_support(&pp->polytope, pp->coordinate_bound, 1, *direction, out, hint);
 }
 
 /* Both supports of a pair of climbing polytopes, the two climbs taken in
@@ -255,29 +282,47 @@ void agjk__polytope_support(const void *data, const agjk_vec3 *direction, agjk_v
  * is a branch the processor mispredicts, and what follows a mispredicted
  * branch is thrown away: one after the other, the second climb cannot
  * advance while the first moves; in turns it does. */
-void agjk__polytope_pair_support(const void *data_a, const agjk_vec3 *direction_a,
-                                 agjk_vec3 *out_a, int *hint_a, const void *data_b,
-                                 const agjk_vec3 *direction_b, agjk_vec3 *out_b, int *hint_b) {
-    const agjk_polytope *pa = (const agjk_polytope *)data_a, *pb = (const agjk_polytope *)data_b;
+static AGJK__ALWAYS_INLINE void pair_support(const agjk_polytope *pa, double bound_a,
+                                             agjk_vec3 da, agjk_vec3 *out_a, int *hint_a,
+                                             const agjk_polytope *pb, double bound_b,
+                                             agjk_vec3 db, agjk_vec3 *out_b, int *hint_b,
+                                             int bounded) {
     if (!climbs(pa) || !climbs(pb)) {
-        agjk__polytope_support(pa, direction_a, out_a, hint_a);
-        agjk__polytope_support(pb, direction_b, out_b, hint_b);
+        polytope_support(pa, bound_a, bounded, da, out_a, hint_a);
+        polytope_support(pb, bound_b, bounded, db, out_b, hint_b);
         return;
     }
     climb a, b;
-    climb_begin(&a, pa, *direction_a, *hint_a);
-    climb_begin(&b, pb, *direction_b, *hint_b);
+    climb_begin(&a, pa, da, *hint_a, bound_a);
+    climb_begin(&b, pb, db, *hint_b, bound_b);
     int run_a = 1, run_b = 1;
     while (run_a & run_b) {
-        run_a = climb_step(&a);
-        run_b = climb_step(&b);
+        run_a = climb_step(&a, bounded);
+        run_b = climb_step(&b, bounded);
     }
-    while (run_a) run_a = climb_step(&a);
-    while (run_b) run_b = climb_step(&b);
-    int current_a = a.current, cut_a = a.left == 0, clear_a = climb_clear(&a);
-    int current_b = b.current, cut_b = b.left == 0, clear_b = climb_clear(&b);
-    climb_answer(pa, *direction_a, current_a, cut_a, clear_a, out_a, hint_a);
-    climb_answer(pb, *direction_b, current_b, cut_b, clear_b, out_b, hint_b);
+    while (run_a) run_a = climb_step(&a, bounded);
+    while (run_b) run_b = climb_step(&b, bounded);
+    int current_a = a.current, cut_a = a.left == 0, clear_a = climb_clear(&a, bounded);
+    int current_b = b.current, cut_b = b.left == 0, clear_b = climb_clear(&b, bounded);
+    climb_answer(pa, da, current_a, cut_a, clear_a, out_a, hint_a);
+    climb_answer(pb, db, current_b, cut_b, clear_b, out_b, hint_b);
+}
+
+void agjk__polytope_pair_support(const void *data_a, const agjk_vec3 *direction_a,
+                                 agjk_vec3 *out_a, int *hint_a, const void *data_b,
+                                 const agjk_vec3 *direction_b, agjk_vec3 *out_b, int *hint_b) {
+    pair_support((const agjk_polytope *)data_a, 0.0, *direction_a, out_a, hint_a,
+                 (const agjk_polytope *)data_b, 0.0, *direction_b, out_b, hint_b, 0);
+}
+
+void agjk__prepared_polytope_pair_support(const void *data_a, const agjk_vec3 *direction_a,
+                                          agjk_vec3 *out_a, int *hint_a, const void *data_b,
+                                          const agjk_vec3 *direction_b, agjk_vec3 *out_b,
+                                          int *hint_b) {
+    const agjk_prepared_polytope *pa = (const agjk_prepared_polytope *)data_a;
+    const agjk_prepared_polytope *pb = (const agjk_prepared_polytope *)data_b;
+    pair_support(&pa->polytope, pa->coordinate_bound, *direction_a, out_a, hint_a,
+                 &pb->polytope, pb->coordinate_bound, *direction_b, out_b, hint_b, 1);
 }
 
 static int adjacency_is_valid(const agjk_polytope *p) {
@@ -292,12 +337,49 @@ static int adjacency_is_valid(const agjk_polytope *p) {
     return 1;
 }
 
+/* Whether agjk_shape_polytope accepts `p`; if so, *bound = max |coordinate|
+ * over its vertices. */
+static int polytope_is_valid(const agjk_polytope *p, double *bound) {
+    if (!p || !p->vertices || p->vertex_count < 1 || p->vertex_count > AGJK_POLYTOPE_MAX_VERTICES)
+        return 0;
+    double m = 0.0;
+    for (int i = 0; i < p->vertex_count; ++i) {
+        if (!v3_in_range(p->vertices[i])) return 0;
+        double c = v3_maxabs(p->vertices[i]);
+        m = c > m ? c : m;
+    }
+    *bound = m;
+    return adjacency_is_valid(p);
+}
+
 agjk_status agjk_shape_polytope(agjk_shape *shape, const agjk_polytope *polytope) {
-    if (!shape || !polytope || !polytope->vertices || polytope->vertex_count < 1 ||
-        polytope->vertex_count > AGJK_POLYTOPE_MAX_VERTICES)
-        return AGJK_STATUS_INVALID_INPUT;
-    for (int i = 0; i < polytope->vertex_count; ++i)
-        if (!v3_in_range(polytope->vertices[i])) return AGJK_STATUS_INVALID_INPUT;
-    if (!adjacency_is_valid(polytope)) return AGJK_STATUS_INVALID_INPUT;
+    double bound;
+    if (!shape || !polytope_is_valid(polytope, &bound)) return AGJK_STATUS_INVALID_INPUT;
     return shape_fill(shape, agjk__polytope_support, polytope, 0.0);
+}
+
+agjk_status agjk_polytope_prepare_sized(agjk_prepared_polytope *prepared, size_t struct_size,
+                                        const agjk_polytope *polytope) {
+    double bound;
+    if (!prepared || struct_size < sizeof *prepared || !polytope_is_valid(polytope, &bound))
+        return AGJK_STATUS_INVALID_INPUT;
+    memset(prepared, 0, sizeof *prepared);
+    prepared->struct_size = (uint32_t)sizeof *prepared;
+    prepared->polytope = *polytope;
+    prepared->coordinate_bound = bound;
+    return AGJK_STATUS_OK;
+}
+
+agjk_status agjk_shape_prepared_polytope(agjk_shape *shape,
+                                         const agjk_prepared_polytope *prepared) {
+    double bound;
+    /* The bound must hold for the vertices as they are now (the climb's
+     * certification rests on it): checked in the same pass as their range.
+     * NaN fails the comparisons. */
+    if (!shape || !prepared || prepared->struct_size < sizeof *prepared ||
+        !polytope_is_valid(&prepared->polytope, &bound) ||
+        !(bound <= prepared->coordinate_bound) ||
+        !(prepared->coordinate_bound <= AGJK_MAX_COORDINATE))
+        return AGJK_STATUS_INVALID_INPUT;
+    return shape_fill(shape, agjk__prepared_polytope_support, prepared, 0.0);
 }

@@ -280,6 +280,71 @@ START_TEST(polytope_rejects_bad_vertices) {
 }
 END_TEST
 
+/* The shape of `poly`: plain (agjk_shape_polytope) or prepared into *prep,
+ * which must then outlive the shape. */
+static void polytope_shape(agjk_shape *shape, const agjk_polytope *poly,
+                           agjk_prepared_polytope *prep, int prepared) {
+    if (prepared) {
+        TU_CHECK_INT_EQ(agjk_polytope_prepare(prep, poly), AGJK_STATUS_OK);
+        TU_CHECK_INT_EQ(agjk_shape_prepared_polytope(shape, prep), AGJK_STATUS_OK);
+    } else {
+        TU_CHECK_INT_EQ(agjk_shape_polytope(shape, poly), AGJK_STATUS_OK);
+    }
+}
+
+/* agjk_polytope_prepare checks the polytope as agjk_shape_polytope does
+ * and leaves the struct unchanged on failure. agjk_shape_prepared_polytope
+ * rejects an unprepared struct, and a bound the vertices exceed (they moved
+ * after preparing: the climb's certification would rest on a false bound),
+ * is NaN or lies beyond the coordinate range. */
+START_TEST(prepared_polytope_rejects_bad_input) {
+    agjk_vec3 v[4] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, -2}};
+    agjk_polytope p = {v, 4, NULL, NULL};
+    agjk_prepared_polytope pp, before;
+    memset(&pp, 0x5a, sizeof pp);
+    before = pp;
+    TU_CHECK_INT_EQ(agjk_polytope_prepare(NULL, &p), AGJK_STATUS_INVALID_INPUT);
+    TU_CHECK_INT_EQ(agjk_polytope_prepare(&pp, NULL), AGJK_STATUS_INVALID_INPUT);
+    TU_CHECK_INT_EQ(agjk_polytope_prepare_sized(&pp, sizeof pp - 1, &p),
+                    AGJK_STATUS_INVALID_INPUT);
+    v[1].x = NAN;
+    TU_CHECK_INT_EQ(agjk_polytope_prepare(&pp, &p), AGJK_STATUS_INVALID_INPUT);
+    v[1].x = 1.0;
+    int32_t off[5] = {0, 1, 2, 3, 4}, nb[4] = {1, 2, 3, 9};
+    p.neighbor_offsets = off;
+    p.neighbors = nb;
+    TU_CHECK_INT_EQ(agjk_polytope_prepare(&pp, &p), AGJK_STATUS_INVALID_INPUT);
+    TU_ENSURE(memcmp(&pp, &before, sizeof pp) == 0, "a failed prepare changed the struct");
+    p.neighbor_offsets = NULL;
+    p.neighbors = NULL;
+
+    TU_CHECK_INT_EQ(agjk_polytope_prepare(&pp, &p), AGJK_STATUS_OK);
+    TU_CHECK_INT_EQ((int)pp.struct_size, (int)sizeof pp);
+    TU_CHECK(pp.coordinate_bound == 2.0);
+    TU_CHECK(pp.polytope.vertices == v && pp.polytope.vertex_count == 4);
+    agjk_shape sh;
+    TU_CHECK_INT_EQ(agjk_shape_prepared_polytope(&sh, &pp), AGJK_STATUS_OK);
+    EXPECT_REJECT(agjk_shape_prepared_polytope(shape, NULL));
+    TU_CHECK_INT_EQ(agjk_shape_prepared_polytope(NULL, &pp), AGJK_STATUS_INVALID_INPUT);
+    agjk_prepared_polytope bad = pp;
+    bad.struct_size = 0; /* never prepared (a zeroed struct) */
+    EXPECT_REJECT(agjk_shape_prepared_polytope(shape, &bad));
+    bad = pp;
+    bad.coordinate_bound = NAN;
+    EXPECT_REJECT(agjk_shape_prepared_polytope(shape, &bad));
+    bad.coordinate_bound = INFINITY;
+    EXPECT_REJECT(agjk_shape_prepared_polytope(shape, &bad));
+    bad.coordinate_bound = 1.5;
+    EXPECT_REJECT(agjk_shape_prepared_polytope(shape, &bad));
+    v[2].y = -2.5; /* moved after preparing */
+    EXPECT_REJECT(agjk_shape_prepared_polytope(shape, &pp));
+    v[2].y = 1.0;
+    /* a looser bound than the tightest is still a bound */
+    bad.coordinate_bound = 3.0;
+    TU_CHECK_INT_EQ(agjk_shape_prepared_polytope(&sh, &bad), AGJK_STATUS_OK);
+}
+END_TEST
+
 START_TEST(polytope_hill_climbing) {
     /* Hill climbing over the hull's edge graph (adjacency built from the
      * brute-force hull) must find the same support value as a scan, from
@@ -300,32 +365,35 @@ START_TEST(polytope_hill_climbing) {
         poly.vertices = verts;
         poly.vertex_count = n;
         TU_CHECK_INT_EQ(agjk_polytope_build_adjacency(&poly, tris, nt), AGJK_STATUS_OK);
-        agjk_shape shape;
-        TU_CHECK_INT_EQ(agjk_shape_polytope(&shape, &poly), AGJK_STATUS_OK);
         double size = tu_bounding_radius(&s);
-        agjk_vec3 d = tu_unit_vector(&rng), axis = tu_unit_vector(&rng);
-        int carried = 0;
-        for (int i = 0; i < 1000; i++) {
-            int hint;
-            if (i % 2) {
-                /* coherent: rotate d a little about a fixed axis, keep the hint */
-                d = tu_add(d, tu_scale(tu_cross(axis, d), 0.05));
-                d = tu_scale(d, 1.0 / tu_norm(d));
-                hint = carried;
-            } else {
-                d = tu_unit_vector(&rng);
-                hint = (i % 10 == 0) ? (i % 20 == 0 ? -7 : n + 5) : (int)tu_uniform_int(&rng, (uint32_t)n);
+        for (int prepared = 0; prepared < 2; ++prepared) {
+            agjk_shape shape;
+            agjk_prepared_polytope prep;
+            polytope_shape(&shape, &poly, &prep, prepared);
+            agjk_vec3 d = tu_unit_vector(&rng), axis = tu_unit_vector(&rng);
+            int carried = 0;
+            for (int i = 0; i < 1000; i++) {
+                int hint;
+                if (i % 2) {
+                    /* coherent: rotate d a little about a fixed axis, keep the hint */
+                    d = tu_add(d, tu_scale(tu_cross(axis, d), 0.05));
+                    d = tu_scale(d, 1.0 / tu_norm(d));
+                    hint = carried;
+                } else {
+                    d = tu_unit_vector(&rng);
+                    hint = (i % 10 == 0) ? (i % 20 == 0 ? -7 : n + 5) : (int)tu_uniform_int(&rng, (uint32_t)n);
+                }
+                agjk_vec3 sup;
+                shape.support(shape.data, &d, &sup, &hint);
+                long double dl[3] = {d.x, d.y, d.z}, rs[3];
+                ref_support_local(&s, dl, rs);
+                double h_ref = (double)(dl[0] * rs[0] + dl[1] * rs[1] + dl[2] * rs[2]);
+                TU_ENSURE(fabs(tu_dot(d, sup) - h_ref) <= 1e-14 * size,
+                          "polytope %d (n=%d, prepared %d) dir %d: hill climbing h = %.17g, scan %.17g",
+                          rep, n, prepared, i, tu_dot(d, sup), h_ref);
+                TU_ENSURE(hint >= 0 && hint < n, "polytope %d dir %d: hint %d out of range", rep, i, hint);
+                carried = hint;
             }
-            agjk_vec3 sup;
-            shape.support(shape.data, &d, &sup, &hint);
-            long double dl[3] = {d.x, d.y, d.z}, rs[3];
-            ref_support_local(&s, dl, rs);
-            double h_ref = (double)(dl[0] * rs[0] + dl[1] * rs[1] + dl[2] * rs[2]);
-            TU_ENSURE(fabs(tu_dot(d, sup) - h_ref) <= 1e-14 * size,
-                      "polytope %d (n=%d) dir %d: hill climbing h = %.17g, scan %.17g", rep, n, i,
-                      tu_dot(d, sup), h_ref);
-            TU_ENSURE(hint >= 0 && hint < n, "polytope %d dir %d: hint %d out of range", rep, i, hint);
-            carried = hint;
         }
         agjk_polytope_free_adjacency(&poly);
     }
@@ -573,11 +641,59 @@ static void pair_polytope(tu_rng *rng, agjk_polytope *poly, agjk_vec3 *verts, in
 }
 
 /* The two polytopes' supports taken in turns (agjk__polytope_pair_support,
- * the Minkowski support's path for a pair of polytopes) are each the
+ * the Minkowski support's path for a pair of polytopes, and its prepared
+ * twin for a pair of prepared ones) are each the
  * support one climb or scan gives, point and hint, from any hints
  * (out-of-range ones too) and either way of finding them. And queries on
  * such pairs answer bit for bit as with A behind a callback, where each
  * shape is asked on its own. */
+typedef void (*pair_support_fn)(const void *, const agjk_vec3 *, agjk_vec3 *, int *,
+                                const void *, const agjk_vec3 *, agjk_vec3 *, int *);
+
+/* polytope_pair_support_matches_single for one pair of shapes (plain or
+ * prepared polytopes) and the pair function of their kind; returns the
+ * number of queries compared. */
+static int check_pair(tu_rng *rng, const agjk_shape *sa, const agjk_shape *sb, pair_support_fn pair,
+                      int na, int nb, int rep) {
+    for (int i = 0; i < 200; i++) {
+        agjk_vec3 da = tu_unit_vector(rng), db = tu_scale(tu_unit_vector(rng), 3.0);
+        int ha = i % 17 == 0 ? -3 : (int)tu_uniform_int(rng, (uint32_t)na + 2);
+        int hb = i % 13 == 0 ? nb + 9 : (int)tu_uniform_int(rng, (uint32_t)nb);
+        int ha1 = ha, hb1 = hb, ha2 = ha, hb2 = hb;
+        agjk_vec3 oa1, ob1, oa2, ob2;
+        sa->support(sa->data, &da, &oa1, &ha1);
+        sb->support(sb->data, &db, &ob1, &hb1);
+        pair(sa->data, &da, &oa2, &ha2, sb->data, &db, &ob2, &hb2);
+        TU_ENSURE(memcmp(&oa1, &oa2, sizeof oa1) == 0 && memcmp(&ob1, &ob2, sizeof ob1) == 0 &&
+                      ha1 == ha2 && hb1 == hb2,
+                  "pair %d (n = %d, %d) direction %d: in turns (%d, %d), alone (%d, %d)", rep, na,
+                  nb, i, ha2, hb2, ha1, hb1);
+    }
+    agjk_shape wrapped = {forwarding_support, sa, 0.0};
+    int queries = 0;
+    for (int q = 0; q < 20; q++) {
+        agjk_pose posa = tu_random_pose(rng, 1.0), posb = tu_random_pose(rng, 1.0);
+        agjk_options o = agjk_default_options();
+        o.method = q % 3 == 0   ? AGJK_METHOD_GJK
+                   : q % 3 == 1 ? AGJK_METHOD_NESTEROV
+                                : AGJK_METHOD_ADAPTIVE;
+        o.compute = AGJK_COMPUTE_WITNESS;
+        agjk_result r1, r2;
+        if (q % 2) {
+            agjk_collide(&wrapped, &posa, sb, &posb, &o, &r1);
+            agjk_collide(sa, &posa, sb, &posb, &o, &r2);
+        } else {
+            agjk_distance(&wrapped, &posa, sb, &posb, &o, &r1);
+            agjk_distance(sa, &posa, sb, &posb, &o, &r2);
+        }
+        TU_ENSURE(memcmp(&r1, &r2, sizeof r1) == 0,
+                  "pair %d query %d: status %d / %d, distance %.17g / %.17g", rep, q,
+                  (int)r1.status, (int)r2.status, r1.distance, r2.distance);
+        ++queries;
+    }
+    return queries;
+}
+
 START_TEST(polytope_pair_support_matches_single) {
     tu_rng rng;
     tu_rng_seed(&rng, 31);
@@ -592,51 +708,22 @@ START_TEST(polytope_pair_support_matches_single) {
         int nb = 32 + (int)tu_uniform_int(&rng, 48);
         pair_polytope(&rng, &pa, va, ta, na, rep % 4 != 3);
         pair_polytope(&rng, &pb, vb, tb, nb, rep % 4 != 2);
-        agjk_shape sa, sb;
-        TU_CHECK_INT_EQ(agjk_shape_polytope(&sa, &pa), AGJK_STATUS_OK);
-        TU_CHECK_INT_EQ(agjk_shape_polytope(&sb, &pb), AGJK_STATUS_OK);
         climbed += pa.neighbor_offsets && pb.neighbor_offsets &&
                    na >= AGJK_POLYTOPE_HILL_CLIMB_MIN_VERTICES &&
                    nb >= AGJK_POLYTOPE_HILL_CLIMB_MIN_VERTICES;
-        for (int i = 0; i < 200; i++) {
-            agjk_vec3 da = tu_unit_vector(&rng), db = tu_scale(tu_unit_vector(&rng), 3.0);
-            int ha = i % 17 == 0 ? -3 : (int)tu_uniform_int(&rng, (uint32_t)na + 2);
-            int hb = i % 13 == 0 ? nb + 9 : (int)tu_uniform_int(&rng, (uint32_t)nb);
-            int ha1 = ha, hb1 = hb, ha2 = ha, hb2 = hb;
-            agjk_vec3 oa1, ob1, oa2, ob2;
-            sa.support(sa.data, &da, &oa1, &ha1);
-            sb.support(sb.data, &db, &ob1, &hb1);
-            agjk__polytope_pair_support(&pa, &da, &oa2, &ha2, &pb, &db, &ob2, &hb2);
-            TU_ENSURE(memcmp(&oa1, &oa2, sizeof oa1) == 0 && memcmp(&ob1, &ob2, sizeof ob1) == 0 &&
-                          ha1 == ha2 && hb1 == hb2,
-                      "pair %d (n = %d, %d) direction %d: in turns (%d, %d), alone (%d, %d)", rep,
-                      na, nb, i, ha2, hb2, ha1, hb1);
-        }
-        agjk_shape wrapped = {forwarding_support, &sa, 0.0};
-        for (int q = 0; q < 20; q++) {
-            agjk_pose posa = tu_random_pose(&rng, 1.0), posb = tu_random_pose(&rng, 1.0);
-            agjk_options o = agjk_default_options();
-            o.method = q % 3 == 0 ? AGJK_METHOD_GJK : q % 3 == 1 ? AGJK_METHOD_NESTEROV
-                                                                  : AGJK_METHOD_ADAPTIVE;
-            o.compute = AGJK_COMPUTE_WITNESS;
-            agjk_result r1, r2;
-            if (q % 2) {
-                agjk_collide(&wrapped, &posa, &sb, &posb, &o, &r1);
-                agjk_collide(&sa, &posa, &sb, &posb, &o, &r2);
-            } else {
-                agjk_distance(&wrapped, &posa, &sb, &posb, &o, &r1);
-                agjk_distance(&sa, &posa, &sb, &posb, &o, &r2);
-            }
-            TU_ENSURE(memcmp(&r1, &r2, sizeof r1) == 0,
-                      "pair %d query %d: status %d / %d, distance %.17g / %.17g", rep, q,
-                      (int)r1.status, (int)r2.status, r1.distance, r2.distance);
-            ++pairs;
-        }
+        agjk_shape sa, sb;
+        agjk_prepared_polytope ppa, ppb;
+        polytope_shape(&sa, &pa, NULL, 0);
+        polytope_shape(&sb, &pb, NULL, 0);
+        pairs += check_pair(&rng, &sa, &sb, agjk__polytope_pair_support, na, nb, rep);
+        polytope_shape(&sa, &pa, &ppa, 1);
+        polytope_shape(&sb, &pb, &ppb, 1);
+        pairs += check_pair(&rng, &sa, &sb, agjk__prepared_polytope_pair_support, na, nb, rep);
         if (pa.neighbor_offsets) agjk_polytope_free_adjacency(&pa);
         if (pb.neighbor_offsets) agjk_polytope_free_adjacency(&pb);
     }
     TU_ENSURE(climbed >= 15, "only %d pairs where both climb", climbed);
-    TU_ENSURE(pairs == 800, "%d queries", pairs);
+    TU_ENSURE(pairs == 1600, "%d queries", pairs);
 }
 END_TEST
 
@@ -646,15 +733,17 @@ END_TEST
  * (1, t, 0) with t > 0 the short edge gains t * edge, below the rounding of
  * <d, v> near x = 1001, while w lies higher than v by about t - 1e-6. The
  * caps are fans from a vertex far from v, so that v, a and w have few
- * neighbours and the climb from v must cross the short edge. Returns the
- * vertex count; *nt the triangle count. */
+ * neighbours and the climb from v must cross the short edge. `lean` moves a
+ * back along x (the short edge leans), and w lies `back` behind v (1e-6 in
+ * the plain prism). Returns the vertex count; *nt the triangle count. */
 #define PRISM_SIDE 20
-static int short_edge_prism(double offset, double edge, agjk_vec3 *v, int32_t *tris, int *nt) {
+static int leaning_prism(double offset, double edge, double lean, double back, agjk_vec3 *v,
+                         int32_t *tris, int *nt) {
     double px[PRISM_SIDE], py[PRISM_SIDE];
     int n = 0;
     px[n] = offset + 1.0, py[n++] = 0.0;
-    px[n] = offset + 1.0, py[n++] = edge;
-    px[n] = offset + 1.0 - 1e-6, py[n++] = 1.0;
+    px[n] = offset + 1.0 - lean, py[n++] = edge;
+    px[n] = offset + 1.0 - back, py[n++] = 1.0;
     for (int k = 0; k < PRISM_SIDE - 3; ++k) {
         double t = 1.5707963267948966 + 3.141592653589793 * k / (PRISM_SIDE - 4);
         px[n] = offset - 1.0 + 1.5 * cos(t), py[n++] = 1.5 * sin(t);
@@ -675,6 +764,10 @@ static int short_edge_prism(double offset, double edge, agjk_vec3 *v, int32_t *t
     }
     *nt = t;
     return 2 * n;
+}
+
+static int short_edge_prism(double offset, double edge, agjk_vec3 *v, int32_t *tris, int *nt) {
+    return leaning_prism(offset, edge, 0.0, 1e-6, v, tris, nt);
 }
 
 /* The exact distance (long double) from q to the prism's side polygon, the
@@ -713,62 +806,117 @@ START_TEST(polytope_climb_short_edges) {
             int nt, n = short_edge_prism(offset, edges[ei], v, tris, &nt);
             agjk_polytope poly = {v, n, NULL, NULL};
             TU_CHECK_INT_EQ(agjk_polytope_build_adjacency(&poly, tris, nt), AGJK_STATUS_OK);
-            agjk_shape shape;
-            TU_CHECK_INT_EQ(agjk_shape_polytope(&shape, &poly), AGJK_STATUS_OK);
-            double vmax = 0.0;
-            for (int i = 0; i < n; ++i) vmax = fmax(vmax, fmax(fabs(v[i].x), fabs(v[i].y)));
-            for (int di = 0; di < 60; ++di) {
-                /* t from 1e-2 down to 1e-8: w above v by t - 1e-6, or below */
-                double t = pow(10.0, -2.0 - 6.0 * di / 59.0);
-                agjk_vec3 d = {1.0, t, di % 2 ? 0.0 : 1e-3 * t};
-                long double best = -INFINITY;
-                for (int i = 0; i < n; ++i)
-                    best = fmaxl(best, (long double)d.x * v[i].x + (long double)d.y * v[i].y +
-                                           (long double)d.z * v[i].z);
-                for (int hint = 0; hint < n; ++hint) {
-                    int h = hint;
-                    agjk_vec3 s;
-                    shape.support(shape.data, &d, &s, &h);
-                    long double got =
-                        (long double)d.x * s.x + (long double)d.y * s.y + (long double)d.z * s.z;
-                    double allowed = 8.0 * DBL_EPSILON * (1.0 + t + 1e-3 * t) * vmax;
-                    TU_ENSURE(got >= best - allowed,
-                              "offset %g edge %g t %g from hint %d: vertex %d, %.21Lg below the "
-                              "maximum %.21Lg",
-                              offset, edges[ei], t, hint, h, best - got, best);
-                    ++checked;
+            for (int prepared = 0; prepared < 2; ++prepared) {
+                agjk_shape shape;
+                agjk_prepared_polytope prep;
+                polytope_shape(&shape, &poly, &prep, prepared);
+                double vmax = 0.0;
+                for (int i = 0; i < n; ++i) vmax = fmax(vmax, fmax(fabs(v[i].x), fabs(v[i].y)));
+                for (int di = 0; di < 60; ++di) {
+                    /* t from 1e-2 down to 1e-8: w above v by t - 1e-6, or below */
+                    double t = pow(10.0, -2.0 - 6.0 * di / 59.0);
+                    agjk_vec3 d = {1.0, t, di % 2 ? 0.0 : 1e-3 * t};
+                    long double best = -INFINITY;
+                    for (int i = 0; i < n; ++i)
+                        best = fmaxl(best, (long double)d.x * v[i].x + (long double)d.y * v[i].y +
+                                               (long double)d.z * v[i].z);
+                    for (int hint = 0; hint < n; ++hint) {
+                        int h = hint;
+                        agjk_vec3 s;
+                        shape.support(shape.data, &d, &s, &h);
+                        long double got =
+                            (long double)d.x * s.x + (long double)d.y * s.y + (long double)d.z * s.z;
+                        double allowed = 8.0 * DBL_EPSILON * (1.0 + t + 1e-3 * t) * vmax;
+                        TU_ENSURE(got >= best - allowed,
+                                  "offset %g edge %g t %g from hint %d: vertex %d, %.21Lg below the "
+                                  "maximum %.21Lg",
+                                  offset, edges[ei], t, hint, h, best - got, best);
+                        ++checked;
+                    }
                 }
-            }
-            /* Queries: B a point at q. The exact distance to the prism's
-             * side (|z| <= 1) is the distance to the polygon. */
-            agjk_shape point;
-            agjk_shape_point(&point);
-            agjk_pose ia = {{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}, {0, 0, 0}}, pb = ia;
-            pb.translation = (agjk_vec3){offset + 1.0 + 1e5, 6.0, 0.0};
-            long double exact = polygon_distance(v, n / 2, pb.translation);
-            /* just inside, past the short edge: halfway between a and w */
-            agjk_pose inside = ia;
-            inside.translation = (agjk_vec3){offset + 1.0 - 0.6e-6, 0.4, 0.0};
-            for (int m = 0; m <= AGJK_METHOD_ADAPTIVE; ++m) {
-                agjk_options o = agjk_default_options();
-                o.method = (agjk_method)m;
-                agjk_result r;
-                TU_CHECK_INT_EQ(agjk_distance(&shape, &ia, &point, &pb, &o, &r), r.status);
-                TU_ENSURE(r.status != AGJK_STATUS_INVALID_INPUT &&
-                              (long double)r.distance - r.bound <= exact &&
-                              exact <= (long double)r.distance,
-                          "offset %g edge %g %s: [%.17g, %.17g] misses %.17Lg", offset,
-                          edges[ei], agjk_method_name(o.method), r.distance - r.bound,
-                          r.distance, exact);
-                agjk_collide(&shape, &ia, &point, &inside, &o, &r);
-                TU_ENSURE(r.status != AGJK_STATUS_SEPARATED,
-                          "offset %g edge %g %s: a point inside called separated", offset,
-                          edges[ei], agjk_method_name(o.method));
+                /* Queries: B a point at q. The exact distance to the prism's
+                 * side (|z| <= 1) is the distance to the polygon. */
+                agjk_shape point;
+                agjk_shape_point(&point);
+                agjk_pose ia = {{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}, {0, 0, 0}}, pb = ia;
+                pb.translation = (agjk_vec3){offset + 1.0 + 1e5, 6.0, 0.0};
+                long double exact = polygon_distance(v, n / 2, pb.translation);
+                /* just inside, past the short edge: halfway between a and w */
+                agjk_pose inside = ia;
+                inside.translation = (agjk_vec3){offset + 1.0 - 0.6e-6, 0.4, 0.0};
+                for (int m = 0; m <= AGJK_METHOD_ADAPTIVE; ++m) {
+                    agjk_options o = agjk_default_options();
+                    o.method = (agjk_method)m;
+                    agjk_result r;
+                    TU_CHECK_INT_EQ(agjk_distance(&shape, &ia, &point, &pb, &o, &r), r.status);
+                    TU_ENSURE(r.status != AGJK_STATUS_INVALID_INPUT &&
+                                  (long double)r.distance - r.bound <= exact &&
+                                  exact <= (long double)r.distance,
+                              "offset %g edge %g %s: [%.17g, %.17g] misses %.17Lg", offset,
+                              edges[ei], agjk_method_name(o.method), r.distance - r.bound,
+                              r.distance, exact);
+                    agjk_collide(&shape, &ia, &point, &inside, &o, &r);
+                    TU_ENSURE(r.status != AGJK_STATUS_SEPARATED,
+                              "offset %g edge %g %s: a point inside called separated", offset,
+                              edges[ei], agjk_method_name(o.method));
+                }
             }
             agjk_polytope_free_adjacency(&poly);
         }
     }
-    TU_ENSURE(checked == 9 * 60 * 2 * PRISM_SIDE, "%d support checks", checked);
+    TU_ENSURE(checked == 2 * 9 * 60 * 2 * PRISM_SIDE, "%d support checks", checked);
+}
+END_TEST
+
+START_TEST(polytope_climb_hidden_fall) {
+    /* The short edge (1e-9) of the prism at x = 1001 leaning back by 2 ulps
+     * of x: along d = (dx, t, 1e-3), with t chosen so that a lies higher
+     * than v by 0.3 ulp of x (times dx), the computed <d, a> is strictly
+     * lower than <d, v> for some dx (the first of 64 tried for which
+     * rounding does that; the comparisons below are the climb's own, and the
+     * true gain is checked in long double). w lies behind a, higher than v
+     * by about 1.7e-5. A climb that takes "no neighbour computes higher" for
+     * a maximum, or allows too little for rounding, stops at v. */
+    static agjk_vec3 v[2 * PRISM_SIDE];
+    static int32_t tris[3 * 4 * PRISM_SIDE];
+    const double x = 1001.0, edge = 1e-9, ulp = nextafter(x, INFINITY) - x;
+    int tried = 0, found = 0;
+    for (int j = 0; j < 64 && !found; ++j, ++tried) {
+        double dx = 1.0 + (j + 0.5) / 67.0, t = (2.0 * dx + 0.3) * ulp / edge, ax = x - 2.0 * ulp;
+        agjk_vec3 d = {dx, t, 1e-3};
+        double dot_v = d.x * x + d.y * 0.0 + d.z * 1.0;
+        double dot_a = d.x * ax + d.y * edge + d.z * 1.0;
+        long double gain = (long double)d.x * (ax - x) + (long double)d.y * edge;
+        if (!(dot_a < dot_v && gain > 0)) continue;
+        found = 1;
+        double back = (2.0 + 0.15 / dx) * ulp / edge;
+        int nt, n = leaning_prism(x - 1.0, edge, 2.0 * ulp, back, v, tris, &nt);
+        long double best = -INFINITY;
+        for (int i = 0; i < n; ++i)
+            best = fmaxl(best, (long double)d.x * v[i].x + (long double)d.y * v[i].y +
+                                   (long double)d.z * v[i].z);
+        long double at_v = (long double)d.x * x + d.z;
+        TU_ENSURE(best - at_v > 1e-5, "the prism's maximum lies %.3Lg above v", best - at_v);
+        agjk_polytope poly = {v, n, NULL, NULL};
+        TU_CHECK_INT_EQ(agjk_polytope_build_adjacency(&poly, tris, nt), AGJK_STATUS_OK);
+        for (int prepared = 0; prepared < 2; ++prepared) {
+            agjk_shape shape;
+            agjk_prepared_polytope prep;
+            polytope_shape(&shape, &poly, &prep, prepared);
+            for (int hint = 0; hint < n; ++hint) {
+                int h = hint;
+                agjk_vec3 s;
+                shape.support(shape.data, &d, &s, &h);
+                long double got =
+                    (long double)d.x * s.x + (long double)d.y * s.y + (long double)d.z * s.z;
+                TU_ENSURE(got >= best - 8.0 * DBL_EPSILON * 4.0 * x,
+                          "dx %g, prepared %d, from hint %d: vertex %d, %.3Lg below the maximum",
+                          dx, prepared, hint, h, best - got);
+            }
+        }
+        agjk_polytope_free_adjacency(&poly);
+    }
+    TU_ENSURE(found, "no dx of %d makes the neighbour compute lower", tried);
 }
 END_TEST
 
@@ -787,33 +935,36 @@ START_TEST(polytope_climb_short_edges_swept) {
         int nt, n = short_edge_prism(offsets[oi], edges[oi], v, tris, &nt), sides = n / 2;
         agjk_polytope poly = {v, n, NULL, NULL};
         TU_CHECK_INT_EQ(agjk_polytope_build_adjacency(&poly, tris, nt), AGJK_STATUS_OK);
-        agjk_shape shape, point;
-        TU_CHECK_INT_EQ(agjk_shape_polytope(&shape, &poly), AGJK_STATUS_OK);
-        agjk_shape_point(&point);
-        agjk_pose ia = {{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}, {0, 0, 0}};
-        for (int k = 0; k < 400; ++k) {
-            double gap = pow(10.0, -3.0 + 6.0 * (k % 20) / 19.0);
-            double t = 1e-5 * pow(10.0, 2.0 * (k / 20) / 19.0);
-            agjk_pose pb = ia;
-            pb.translation = (agjk_vec3){offsets[oi] + 1.0 + gap, gap * t, 0.3};
-            long double exact = polygon_distance(v, sides, pb.translation);
-            for (int m = 0; m <= AGJK_METHOD_ADAPTIVE; ++m) {
-                agjk_options o = agjk_default_options();
-                o.method = (agjk_method)m;
-                agjk_result r;
-                agjk_distance(&shape, &ia, &point, &pb, &o, &r);
-                TU_ENSURE(r.status != AGJK_STATUS_INVALID_INPUT &&
-                              (long double)r.distance - r.bound <= exact &&
-                              exact <= (long double)r.distance,
-                          "offset %g gap %g t %g %s: [%.17g, %.17g] misses %.17Lg",
-                          offsets[oi], gap, t, agjk_method_name(o.method),
-                          r.distance - r.bound, r.distance, exact);
-                ++checked;
+        for (int prepared = 0; prepared < 2; ++prepared) {
+            agjk_shape shape, point;
+            agjk_prepared_polytope prep;
+            polytope_shape(&shape, &poly, &prep, prepared);
+            agjk_shape_point(&point);
+            agjk_pose ia = {{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}, {0, 0, 0}};
+            for (int k = 0; k < 400; ++k) {
+                double gap = pow(10.0, -3.0 + 6.0 * (k % 20) / 19.0);
+                double t = 1e-5 * pow(10.0, 2.0 * (k / 20) / 19.0);
+                agjk_pose pb = ia;
+                pb.translation = (agjk_vec3){offsets[oi] + 1.0 + gap, gap * t, 0.3};
+                long double exact = polygon_distance(v, sides, pb.translation);
+                for (int m = 0; m <= AGJK_METHOD_ADAPTIVE; ++m) {
+                    agjk_options o = agjk_default_options();
+                    o.method = (agjk_method)m;
+                    agjk_result r;
+                    agjk_distance(&shape, &ia, &point, &pb, &o, &r);
+                    TU_ENSURE(r.status != AGJK_STATUS_INVALID_INPUT &&
+                                  (long double)r.distance - r.bound <= exact &&
+                                  exact <= (long double)r.distance,
+                              "offset %g gap %g t %g %s: [%.17g, %.17g] misses %.17Lg",
+                              offsets[oi], gap, t, agjk_method_name(o.method),
+                              r.distance - r.bound, r.distance, exact);
+                    ++checked;
+                }
             }
         }
         agjk_polytope_free_adjacency(&poly);
     }
-    TU_ENSURE(checked == 2 * 400 * 6, "%d queries", checked);
+    TU_ENSURE(checked == 2 * 2 * 400 * 6, "%d queries", checked);
 }
 END_TEST
 
@@ -824,11 +975,13 @@ int main(void) {
     TU_ADD(s, ellipsoid_plates_keep_the_range_test);
     TU_ADD(s, constructors_reject_bad_sizes);
     TU_ADD(s, polytope_rejects_bad_vertices);
+    TU_ADD(s, prepared_polytope_rejects_bad_input);
     TU_ADD(s, brute_hull_itself);
     TU_ADD(s, polytope_hill_climbing);
     TU_ADD(s, polytope_hill_climbing_threshold);
     TU_ADD(s, polytope_pair_support_matches_single);
     TU_ADD(s, polytope_climb_short_edges);
+    TU_ADD(s, polytope_climb_hidden_fall);
     TU_ADD(s, polytope_climb_short_edges_swept);
     return tu_run_suite(s);
 }

@@ -13,7 +13,7 @@ void bench_hull_hook(bench_shape *s) {
     if (!h) return;
     if (!mesh_hull_build(s->vertices, (size_t)s->vertex_count, 1, h, err, sizeof err) ||
         h->dimension != 3 || !h->polytope.neighbors ||
-        agjk_shape_polytope(&s->shape, &h->polytope) == AGJK_STATUS_INVALID_INPUT) {
+        agjk_shape_prepared_polytope(&s->shape, &h->prepared) == AGJK_STATUS_INVALID_INPUT) {
         if (!warned++)
             fprintf(stderr, "agjk-bench: warning: no hull adjacency (%s); scan support kept\n",
                     err);
@@ -23,7 +23,7 @@ void bench_hull_hook(bench_shape *s) {
         return;
     }
     s->polytope = h->polytope; /* the struct copy points at h's arrays */
-    agjk_shape_polytope(&s->shape, &s->polytope);
+    agjk_shape_prepared_polytope(&s->shape, &h->prepared);
     s->aux = h;
 }
 

@@ -59,7 +59,7 @@ int cli_shape_load(const char *path, double scale, int flags, cli_shape *s) {
         mesh_points_free(&s->points);
         return 0;
     }
-    if (agjk_shape_polytope(&s->shape, &s->hull.polytope) != AGJK_STATUS_OK) {
+    if (agjk_shape_prepared_polytope(&s->shape, &s->hull.prepared) != AGJK_STATUS_OK) {
         /* Finite points in range and our own adjacency: this is a bug, say so. */
         cli_error("%s: the library rejected the hull as a polytope (internal error)", path);
         cli_shape_free(s);

@@ -93,8 +93,10 @@ typedef struct mesh_hull {
     int32_t *triangles;
     int32_t triangle_count;
     /* The shape data: vertices, plus the hill-climbing adjacency when the
-     * hull is solid. Pass &polytope to agjk_shape_polytope(). */
+     * hull is solid; and the same prepared (agjk_polytope_prepare). Pass
+     * &prepared to agjk_shape_prepared_polytope(). */
     agjk_polytope polytope;
+    agjk_prepared_polytope prepared;
     agjk_vec3 bbox_min, bbox_max; /* of the input points */
     /* 1: dimension 3 by our test, but Qhull found the set too thin for a
      * solid hull; the points are kept as for a degenerate set. */

@@ -244,6 +244,15 @@ static void bounding_box(const agjk_vec3 *points, size_t count, mesh_hull *hull)
     }
 }
 
+/* hull->prepared from hull->polytope. The library checks what it accepts:
+ * finite points within AGJK_MAX_COORDINATE (mesh loading already rejects
+ * others) and a well-formed adjacency (built by the library itself). */
+static int prepare(mesh_hull *hull, char *err, size_t err_size) {
+    if (agjk_polytope_prepare(&hull->prepared, &hull->polytope) == AGJK_STATUS_OK) return 1;
+    set_error(err, err_size, "the library rejected the hull as a polytope");
+    return 0;
+}
+
 int mesh_hull_points_only(const agjk_vec3 *points, size_t count, mesh_hull *hull, char *err,
                           size_t err_size) {
     memset(hull, 0, sizeof *hull);
@@ -264,7 +273,9 @@ int mesh_hull_points_only(const agjk_vec3 *points, size_t count, mesh_hull *hull
     hull->points_only = 1;
     hull->polytope.vertices = hull->vertices;
     hull->polytope.vertex_count = hull->vertex_count;
-    return 1;
+    if (prepare(hull, err, err_size)) return 1;
+    mesh_hull_free(hull);
+    return 0;
 }
 
 int mesh_hull_build(const agjk_vec3 *points, size_t count, int with_adjacency, mesh_hull *hull,
@@ -308,6 +319,7 @@ int mesh_hull_build(const agjk_vec3 *points, size_t count, int with_adjacency, m
         set_error(err, err_size, "cannot build the hull's vertex adjacency");
         ok = 0;
     }
+    if (ok) ok = prepare(hull, err, err_size);
     if (!ok) mesh_hull_free(hull);
     return ok;
 }

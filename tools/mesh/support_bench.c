@@ -230,10 +230,11 @@ int main(int argc, char **argv) {
     }
     printf("# support_bench: ns per support call, best of %d runs of %d calls\n", runs, calls);
     printf("# n = hull vertices (random points on a sphere); climb* = steepest ascent "
-           "at every size; lib = library shape with adjacency\n");
-    printf("%6s | %9s %9s %9s %7s | %9s %9s %9s %7s\n", "n", "scan", "climb*", "lib", "steps",
-           "scan", "climb*", "lib", "steps");
-    printf("%6s | %37s | %37s\n", "", "random directions", "coherent directions");
+           "at every size; lib = library shape with adjacency; prep = the same prepared "
+           "(agjk_polytope_prepare)\n");
+    printf("%6s | %9s %9s %9s %9s %7s | %9s %9s %9s %9s %7s\n", "n", "scan", "climb*", "lib",
+           "prep", "steps", "scan", "climb*", "lib", "prep", "steps");
+    printf("%6s | %47s | %47s\n", "", "random directions", "coherent directions");
     for (size_t k = 0; k < sizeof sizes / sizeof sizes[0]; k++) {
         int n = sizes[k];
         agjk_vec3 *pts = malloc((size_t)n * sizeof *pts);
@@ -246,22 +247,25 @@ int main(int argc, char **argv) {
             return 1;
         }
         agjk_polytope scan_poly = {h.vertices, h.vertex_count, NULL, NULL};
-        agjk_shape scan, lib;
+        agjk_shape scan, lib, prep;
         if (agjk_shape_polytope(&scan, &scan_poly) != AGJK_STATUS_OK ||
-            agjk_shape_polytope(&lib, &h.polytope) != AGJK_STATUS_OK) {
+            agjk_shape_polytope(&lib, &h.polytope) != AGJK_STATUS_OK ||
+            agjk_shape_prepared_polytope(&prep, &h.prepared) != AGJK_STATUS_OK) {
             fprintf(stderr, "library rejected the polytope\n");
             return 1;
         }
-        double r[2][3], steps[2];
+        double r[2][4], steps[2];
         const agjk_vec3 *sets[2] = {random_dirs, coherent_dirs};
         for (int s = 0; s < 2; s++) {
             r[s][0] = time_support(scan.support, scan.data, sets[s], calls, runs);
             r[s][1] = time_support(local_climb, &h.polytope, sets[s], calls, runs);
             r[s][2] = time_support(lib.support, lib.data, sets[s], calls, runs);
+            r[s][3] = time_support(prep.support, prep.data, sets[s], calls, runs);
             steps[s] = mean_steps(&h.polytope, sets[s], calls < 20000 ? calls : 20000);
         }
-        printf("%6d | %9.1f %9.1f %9.1f %7.2f | %9.1f %9.1f %9.1f %7.2f\n", (int)h.vertex_count,
-               r[0][0], r[0][1], r[0][2], steps[0], r[1][0], r[1][1], r[1][2], steps[1]);
+        printf("%6d | %9.1f %9.1f %9.1f %9.1f %7.2f | %9.1f %9.1f %9.1f %9.1f %7.2f\n",
+               (int)h.vertex_count, r[0][0], r[0][1], r[0][2], r[0][3], steps[0], r[1][0],
+               r[1][1], r[1][2], r[1][3], steps[1]);
         agjk_shape climb = {local_climb, &h.polytope, 0.0};
         int nq = calls / 20 < 500 ? 500 : calls / 20;
         qres[k][0] = time_queries(&scan, nq, 0, runs);
