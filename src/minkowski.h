@@ -363,9 +363,10 @@ static AGJK__ALWAYS_INLINE int agjk__minkowski_support(agjk__minkowski *md, agjk
      * copies, as below). Hulls of
      * 141 points: one-support Boolean queries 133 -> 114 ns, close pairs
      * 600 -> 540, overlapping 612 -> 523. */
-    if (direct && md->support_a == md->support_b &&
+    if (direct &&
         (md->support_a == agjk__polytope_support ||
-         md->support_a == agjk__prepared_polytope_support)) {
+         md->support_a == agjk__prepared_polytope_support) &&
+        md->support_b == md->support_a) {
         agjk_vec3 da = na, dbc = db, qa, qb;
         if (md->support_a == agjk__polytope_support)
             agjk__polytope_pair_support(md->data_a, &da, &qa, &md->hint_a, md->data_b, &dbc, &qb,
