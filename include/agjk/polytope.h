@@ -98,7 +98,8 @@ AGJK_API void agjk_polytope_free_adjacency(agjk_polytope *polytope);
  * Why: the certification of a climb's last vertex (see above) must bound the
  * rounding of <d, u> for each neighbour u, and without a bound on u that is
  * arithmetic on every neighbour the last step reads. With the bound it is one
- * number per support call: the same supports, the same answers, and about a
+ * number per support call: support points certified as the plain polytope's
+ * are (a tie within rounding may resolve to the other vertex), in about a
  * tenth less time on hull and mesh queries (README, benchmark). Use it for a
  * polytope with adjacency that takes many queries; agjk_shape_polytope() is
  * the plain view.
@@ -135,8 +136,8 @@ static inline agjk_status agjk_polytope_prepare(agjk_prepared_polytope *prepared
 }
 
 /** A shape from a prepared polytope: the same shape as
- *  agjk_shape_polytope(&prepared->polytope) gives, with the same support
- *  points, found faster. Checks the polytope again and that every vertex lies
+ *  agjk_shape_polytope(&prepared->polytope) gives, its support points found
+ *  faster and certified alike. Checks the polytope again and that every vertex lies
  *  within `coordinate_bound` (O(vertices + edges), once): a prepared polytope
  *  whose vertices moved after agjk_polytope_prepare() is rejected with
  *  AGJK_STATUS_INVALID_INPUT, as are NULL pointers and an unprepared struct.
