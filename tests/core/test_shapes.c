@@ -727,6 +727,17 @@ START_TEST(polytope_pair_support_matches_single) {
 }
 END_TEST
 
+/* <d, s> in long double (each product of two doubles to 64 bits), and its
+ * maximum over v[0..n-1]. */
+static long double long_dot(agjk_vec3 d, agjk_vec3 s) {
+    return (long double)d.x * s.x + (long double)d.y * s.y + (long double)d.z * s.z;
+}
+static long double long_max(const agjk_vec3 *v, int n, agjk_vec3 d) {
+    long double best = -INFINITY;
+    for (int i = 0; i < n; ++i) best = fmaxl(best, long_dot(d, v[i]));
+    return best;
+}
+
 /* A prism over a strictly convex polygon near x = offset whose vertex v =
  * (offset + 1, 0) has a very short edge to a = (offset + 1, edge), and
  * beyond a, w = (offset + 1 - 1e-6, 1) (then a half circle back). Along d =
@@ -816,16 +827,12 @@ START_TEST(polytope_climb_short_edges) {
                     /* t from 1e-2 down to 1e-8: w above v by t - 1e-6, or below */
                     double t = pow(10.0, -2.0 - 6.0 * di / 59.0);
                     agjk_vec3 d = {1.0, t, di % 2 ? 0.0 : 1e-3 * t};
-                    long double best = -INFINITY;
-                    for (int i = 0; i < n; ++i)
-                        best = fmaxl(best, (long double)d.x * v[i].x + (long double)d.y * v[i].y +
-                                               (long double)d.z * v[i].z);
+                    long double best = long_max(v, n, d);
                     for (int hint = 0; hint < n; ++hint) {
                         int h = hint;
                         agjk_vec3 s;
                         shape.support(shape.data, &d, &s, &h);
-                        long double got =
-                            (long double)d.x * s.x + (long double)d.y * s.y + (long double)d.z * s.z;
+                        long double got = long_dot(d, s);
                         double allowed = 8.0 * DBL_EPSILON * (1.0 + t + 1e-3 * t) * vmax;
                         TU_ENSURE(got >= best - allowed,
                                   "offset %g edge %g t %g from hint %d: vertex %d, %.21Lg below the "
@@ -891,10 +898,7 @@ START_TEST(polytope_climb_hidden_fall) {
         found = 1;
         double back = (2.0 + 0.15 / dx) * ulp / edge;
         int nt, n = leaning_prism(x - 1.0, edge, 2.0 * ulp, back, v, tris, &nt);
-        long double best = -INFINITY;
-        for (int i = 0; i < n; ++i)
-            best = fmaxl(best, (long double)d.x * v[i].x + (long double)d.y * v[i].y +
-                                   (long double)d.z * v[i].z);
+        long double best = long_max(v, n, d);
         long double at_v = (long double)d.x * x + d.z;
         TU_ENSURE(best - at_v > 1e-5, "the prism's maximum lies %.3Lg above v", best - at_v);
         agjk_polytope poly = {v, n, NULL, NULL};
@@ -907,8 +911,7 @@ START_TEST(polytope_climb_hidden_fall) {
                 int h = hint;
                 agjk_vec3 s;
                 shape.support(shape.data, &d, &s, &h);
-                long double got =
-                    (long double)d.x * s.x + (long double)d.y * s.y + (long double)d.z * s.z;
+                long double got = long_dot(d, s);
                 TU_ENSURE(got >= best - 8.0 * DBL_EPSILON * 4.0 * x,
                           "dx %g, prepared %d, from hint %d: vertex %d, %.3Lg below the maximum",
                           dx, prepared, hint, h, best - got);
