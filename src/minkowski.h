@@ -220,7 +220,7 @@ __attribute__((weak)) void agjk__prepared_polytope_support(const void *, const a
 __attribute__((weak)) void agjk__prepared_polytope_pair_support(const void *, const agjk_vec3 *,
                                                                 agjk_vec3 *, int *, const void *,
                                                                 const agjk_vec3 *, agjk_vec3 *,
-                                                                int *);
+                                                                int *, int);
 #else
 #define AGJK__DIRECT_SUPPORT 0
 #endif
@@ -373,7 +373,8 @@ static AGJK__ALWAYS_INLINE int agjk__minkowski_support(agjk__minkowski *md, agjk
                                         &md->hint_b);
         else
             agjk__prepared_polytope_pair_support(md->data_a, &da, &qa, &md->hint_a, md->data_b,
-                                                 &dbc, &qb, &md->hint_b);
+                                                 &dbc, &qb, &md->hint_b,
+                                                 direct == AGJK__SUPPORT_DIRECT_FIRST);
         pa = qa;
         pair_b = qb;
         paired = 1;

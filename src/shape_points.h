@@ -114,6 +114,6 @@ void agjk__prepared_polytope_support(const void *data, const agjk_vec3 *directio
 void agjk__prepared_polytope_pair_support(const void *data_a, const agjk_vec3 *direction_a,
                                           agjk_vec3 *out_a, int *hint_a, const void *data_b,
                                           const agjk_vec3 *direction_b, agjk_vec3 *out_b,
-                                          int *hint_b);
+                                          int *hint_b, int first);
 
 #endif

@@ -92,15 +92,21 @@ AGJK_API agjk_status agjk_polytope_build_adjacency(agjk_polytope *polytope,
  *  be used on caller-provided arrays. */
 AGJK_API void agjk_polytope_free_adjacency(agjk_polytope *polytope);
 
-/** A polytope prepared for queries: the polytope and a bound on its
- *  vertices' coordinates, computed once by agjk_polytope_prepare().
+/** Number of start vertices of a prepared polytope (agjk_prepared_polytope). */
+#define AGJK_POLYTOPE_STARTS 14
+
+/** A polytope prepared for queries: the polytope, a bound on its
+ *  vertices' coordinates and 14 start vertices for a query's first climb,
+ *  computed once by agjk_polytope_prepare().
  *
  * Why: the certification of a climb's last vertex (see above) must bound the
  * rounding of <d, u> for each neighbour u, and without a bound on u that is
  * arithmetic on every neighbour the last step reads. With the bound it is one
  * number per support call: support points certified as the plain polytope's
  * are (a tie within rounding may resolve to the other vertex), in about a
- * tenth less time on hull and mesh queries (README, benchmark). Use it for a
+ * tenth less time on hull and mesh queries (README, benchmark). And a cold
+ * query's first climb (hints 0) between two of them starts near its answer
+ * instead of at vertex 0 (Coal keeps such starts too). Use it for a
  * polytope with adjacency that takes many queries; agjk_shape_polytope() is
  * the plain view.
  *
@@ -116,10 +122,18 @@ typedef struct agjk_prepared_polytope {
     agjk_polytope polytope;
     /** max |x|, |y|, |z| over the vertices. */
     double coordinate_bound;
+    /** Where a query's first climb may start: the vertices farthest along
+     *  +x, -x, +y, -y, +z, -z, then along the diagonals (+-1, +-1, +-1), the
+     *  signs of x, y, z as bits 0, 1, 2 of the index - 6 (a set bit: -1).
+     *  When both shapes of a query are prepared polytopes, its first support
+     *  starts from the one of these nearest the direction if it lies higher
+     *  than the hint's vertex: a cold query (hints 0) walks across the hull
+     *  otherwise. */
+    int32_t starts[AGJK_POLYTOPE_STARTS];
 } agjk_prepared_polytope;
 
 /** Fills `prepared` from `polytope` (checked as agjk_shape_polytope() checks
- *  it: O(vertices + edges), once). `struct_size` must be
+ *  it: O(vertices + edges), and 14 scans for the start vertices, once). `struct_size` must be
  *  sizeof(agjk_prepared_polytope) as the caller sees it; use
  *  agjk_polytope_prepare(). Returns AGJK_STATUS_OK, or
  *  AGJK_STATUS_INVALID_INPUT (NULL pointers, too small a struct_size, a
@@ -140,7 +154,8 @@ static inline agjk_status agjk_polytope_prepare(agjk_prepared_polytope *prepared
  *  faster and certified alike. Checks the polytope again and that every vertex lies
  *  within `coordinate_bound` (O(vertices + edges), once): a prepared polytope
  *  whose vertices moved after agjk_polytope_prepare() is rejected with
- *  AGJK_STATUS_INVALID_INPUT, as are NULL pointers and an unprepared struct.
+ *  AGJK_STATUS_INVALID_INPUT, as are NULL pointers, an unprepared struct and
+ *  start vertices outside 0 .. vertex_count - 1.
  *  `prepared` and the arrays it points to must outlive `shape`, unchanged. */
 AGJK_API agjk_status agjk_shape_prepared_polytope(agjk_shape *shape,
                                                   const agjk_prepared_polytope *prepared);
