@@ -125,10 +125,11 @@ typedef struct agjk_prepared_polytope {
     /** Where a query's first climb may start: the vertices farthest along
      *  +x, -x, +y, -y, +z, -z, then along the diagonals (+-1, +-1, +-1), the
      *  signs of x, y, z as bits 0, 1, 2 of the index - 6 (a set bit: -1).
-     *  When both shapes of a query are prepared polytopes, its first support
-     *  starts from the one of these nearest the direction if it lies higher
-     *  than the hint's vertex: a cold query (hints 0) walks across the hull
-     *  otherwise. */
+     *  When both shapes of a query are prepared polytopes and both hints are
+     *  0 (the default: a cold query), its first support starts from the one
+     *  of these nearest the direction if it lies higher than vertex 0,
+     *  rather than walking across the hull from there. Other hints are
+     *  kept. */
     int32_t starts[AGJK_POLYTOPE_STARTS];
 } agjk_prepared_polytope;
 
