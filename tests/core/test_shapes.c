@@ -695,7 +695,9 @@ static int check_pair(tu_rng *rng, const agjk_shape *sa, const agjk_shape *sb, p
                   "pair %d (n = %d, %d) direction %d: in turns (%d, %d), alone (%d, %d)", rep, na,
                   nb, i, ha2, hb2, ha1, hb1);
         if (!first) continue;
-        int ha3 = ha, hb3 = hb;
+        /* (hints 0 half of the time: a cold query's first support, which
+         * may start from a prepared polytope's start vertices) */
+        int ha3 = i % 2 ? 0 : ha, hb3 = i % 2 ? 0 : hb;
         agjk_vec3 oa3, ob3;
         first(sa->data, &da, &oa3, &ha3, sb->data, &db, &ob3, &hb3);
         double ea = fabs(tu_dot(da, oa3) - tu_dot(da, oa1)), eb = fabs(tu_dot(db, ob3) - tu_dot(db, ob1));
