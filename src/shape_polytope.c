@@ -317,6 +317,13 @@ void agjk__polytope_pair_support(const void *data_a, const agjk_vec3 *direction_
                  (const agjk_polytope *)data_b, 0.0, *direction_b, out_b, hint_b, *hint_b, 0);
 }
 
+/* The directions of a prepared polytope's start vertices: the axes, then
+ * the diagonals, the signs of x, y, z as bits 0, 1, 2 of k - 6 (a set bit:
+ * negative), so that prepared_start finds d's octant from its signs. */
+static const agjk_vec3 start_directions[AGJK_POLYTOPE_STARTS] = {
+    {1, 0, 0},  {-1, 0, 0},  {0, 1, 0},  {0, -1, 0},  {0, 0, 1},   {0, 0, -1},   {1, 1, 1},
+    {-1, 1, 1}, {1, -1, 1},  {-1, -1, 1}, {1, 1, -1}, {-1, 1, -1}, {1, -1, -1}, {-1, -1, -1}};
+
 /* Where a prepared polytope's climb along d starts: of the hint's vertex and
  * the start vertex whose direction (an axis or a diagonal) lies nearest d,
  * the higher. A query's first support runs it when both hints are 0 (the
@@ -401,16 +408,10 @@ agjk_status agjk_polytope_prepare_sized(agjk_prepared_polytope *prepared, size_t
     prepared->struct_size = (uint32_t)sizeof *prepared;
     prepared->polytope = *polytope;
     prepared->coordinate_bound = bound;
-    /* The start vertices: a scan along each of the 14 directions. */
     for (int k = 0; k < AGJK_POLYTOPE_STARTS; ++k) {
-        agjk_vec3 d = k < 6 ? v3(k / 2 == 0 ? 1.0 - 2.0 * (k & 1) : 0.0,
-                                 k / 2 == 1 ? 1.0 - 2.0 * (k & 1) : 0.0,
-                                 k / 2 == 2 ? 1.0 - 2.0 * (k & 1) : 0.0)
-                           : v3(1.0 - 2.0 * ((k - 6) & 1), 1.0 - 2.0 * (((k - 6) >> 1) & 1),
-                                1.0 - 2.0 * (((k - 6) >> 2) & 1));
         int hint;
         agjk_vec3 unused;
-        polytope_scan(polytope, d, &unused, &hint);
+        polytope_scan(polytope, start_directions[k], &unused, &hint);
         prepared->starts[k] = hint;
     }
     return AGJK_STATUS_OK;
