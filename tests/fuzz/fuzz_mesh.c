@@ -31,24 +31,31 @@ static double dot(const agjk_vec3 *a, const agjk_vec3 *b) {
     return a->x * b->x + a->y * b->y + a->z * b->z;
 }
 
-/* Hill climbing over the hull's vertex graph must find the scan's maximum. */
+/* Hill climbing over the hull's vertex graph, plain and prepared, must find
+ * the scan's maximum. */
 static void check_hill_climbing(const mesh_hull *hull) {
-    agjk_shape hill, scan;
+    agjk_shape hill, prepared, scan;
     agjk_polytope plain = hull->polytope;
     plain.neighbor_offsets = NULL;
     plain.neighbors = NULL;
     FUZZ_CHECK(agjk_shape_polytope(&hill, &hull->polytope) == AGJK_STATUS_OK, "hull rejected");
     FUZZ_CHECK(agjk_shape_polytope(&scan, &plain) == AGJK_STATUS_OK, "hull points rejected");
+    FUZZ_CHECK(agjk_shape_prepared_polytope(&prepared, &hull->prepared) == AGJK_STATUS_OK,
+               "prepared hull rejected");
     for (int k = 0; k < 26; k++) {
-        agjk_vec3 d = {(double)(k % 3) - 1, (double)((k / 3) % 3) - 1, (double)(k / 9) - 1}, ph, ps;
-        int hint_h = k % (hull->vertex_count > 0 ? hull->vertex_count : 1), hint_s = 0;
+        agjk_vec3 d = {(double)(k % 3) - 1, (double)((k / 3) % 3) - 1, (double)(k / 9) - 1}, ph, pp,
+                  ps;
+        int hint_h = k % (hull->vertex_count > 0 ? hull->vertex_count : 1), hint_p = hint_h,
+            hint_s = 0;
         if (d.x == 0 && d.y == 0 && d.z == 0) d.z = 0.5;
         hill.support(hill.data, &d, &ph, &hint_h);
+        prepared.support(prepared.data, &d, &pp, &hint_p);
         scan.support(scan.data, &d, &ps, &hint_s);
-        double vh = dot(&d, &ph), vs = dot(&d, &ps);
+        double vh = dot(&d, &ph), vp = dot(&d, &pp), vs = dot(&d, &ps);
         double scale = fabs(hull->bbox_max.x - hull->bbox_min.x) + fabs(hull->bbox_max.y - hull->bbox_min.y) +
                        fabs(hull->bbox_max.z - hull->bbox_min.z) + fabs(vs);
         FUZZ_CHECK(vh >= vs - 1e-9 * scale, "hill climbing support %.17g < scan %.17g", vh, vs);
+        FUZZ_CHECK(vp >= vs - 1e-9 * scale, "prepared climbing support %.17g < scan %.17g", vp, vs);
     }
 }
 
@@ -95,6 +102,12 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
         fz_check_pair(&s, &pa, &box, &pb, &o, 1);
         o.method = AGJK_METHOD_NESTEROV_NORMALIZED;
         fz_check_pair(&s, &pa, &s, &pb, &o, 1);
+        /* Two prepared hulls: the pair path, whose cold first support may
+         * start from the start vertices. */
+        agjk_shape sp;
+        FUZZ_CHECK(agjk_shape_prepared_polytope(&sp, &hull.prepared) == AGJK_STATUS_OK,
+                   "prepared hull rejected");
+        fz_check_pair(&sp, &pa, &sp, &pb, &o, 1);
         mesh_hull_free(&hull);
     } else {
         FUZZ_CHECK(err[0] != '\0', "mesh_hull_build failed without a message");
