@@ -162,17 +162,15 @@ static AGJK__ALWAYS_INLINE agjk_status run_query(const agjk_shape *a, const agjk
      * showed, and counts only if it still holds what was promised. In the
      * gap's terms, ||p||^2 - ||x*||^2 <= upper^2 - lower^2 (cores): within an
      * absolute tolerance, or within the floor such a tolerance is raised to
-     * (gap_verdict's wide one: squared, 8 noise^2 (||x||^2 + ||x - s||^2)),
-     * which is also what "within rounding of contact" means. A relative
+     * (gap_verdict's, agjk__gap_floor2), which is also what "within rounding
+     * of contact" means. A relative
      * tolerance away from contact: the width test below. */
     if (converged && cb.inexact && (!in.relative || at_rounding)) {
         double lo = lower > 0.0 ? lower : 0.0;
         double spread = (cb.upper - lo) * (cb.upper + lo);
         double tol = in.relative ? 0.0 : in.tolerance * md.scale * md.scale;
-        double noise2 = out.noise * out.noise;
-        double floor2 = out.xs2 > 0.0 ? 8.0 * noise2 * (cb.core * cb.core + out.xs2)
-                                      : 4.0 * noise2 * cb.core * cb.core; /* (as gap_verdict) */
-        converged = spread <= tol || spread * spread <= floor2;
+        converged = spread <= tol ||
+                    spread * spread <= agjk__gap_floor2(out.noise, cb.core * cb.core, out.xs2);
     }
     /* Relative mode claims |distance - d*| <= d* tolerance / 2 only when the
      * whole certified interval, rounding included, shows it. */

@@ -192,11 +192,7 @@ static inline agjk__outcome gap_verdict(const solver *sv, double g, double xs2) 
         requested = b > 0.0 ? 2.0 * x_norm * b : 0.0;
     }
     if (g <= requested) return AGJK__CONVERGED;
-    /* g <= 2 noise (||x|| + ||x - s||), squared and bounded above by
-     * 8 noise^2 (||x||^2 + ||x - s||^2). */
-    double noise2 = md->noise * md->noise;
-    double floor2 = xs2 > 0.0 ? 8.0 * noise2 * (sv->x2 + xs2) : 4.0 * noise2 * sv->x2;
-    if (g <= 0.0 || g * g <= floor2) return AGJK__AT_FLOOR;
+    if (g <= 0.0 || g * g <= agjk__gap_floor2(md->noise, sv->x2, xs2)) return AGJK__AT_FLOOR;
     return AGJK__ITERATION_CAP;
 }
 

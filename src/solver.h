@@ -244,6 +244,17 @@ typedef struct agjk__solve_output {
     int flat;            /* a point of A or B came back (flat faces), for the cache */
 } agjk__solve_output;
 
+/* The square of the floor a gap g at x is resolved to (noise: the
+ * floating-point error scale of the points): g <= 2 noise (||x|| +
+ * ||x - s||), squared and bounded above by 8 noise^2 (||x||^2 + ||x - s||^2),
+ * for xs2 = ||x - s||^2 of the support s that gave it; 4 noise^2 ||x||^2
+ * where none did (xs2 = 0). The solver's verdict on a gap and query.c's on
+ * an interval widened by an inexact member point use it alike. */
+static inline double agjk__gap_floor2(double noise, double x2, double xs2) {
+    double noise2 = noise * noise;
+    return xs2 > 0.0 ? 8.0 * noise2 * (x2 + xs2) : 4.0 * noise2 * x2;
+}
+
 /* Iteration 0's outcome: the support point s, the direction x it was taken
  * in (x_0 in solver units), and in Boolean mode whether its plane already
  * separates the shapes (Alg. 2). */
