@@ -82,9 +82,10 @@ typedef struct climb {
     int left; /* moves left: vertex_count at most */
 } climb;
 
-/* `bound`: the prepared polytope's coordinate bound (a bounded climb), or 0. */
-static inline void climb_begin(climb *c, const agjk_polytope *p, agjk_vec3 d, int hint,
-                               double bound) {
+/* `bound`: the prepared polytope's coordinate bound, read by a bounded
+ * climb (`bounded`, a constant at every call) only. */
+static AGJK__ALWAYS_INLINE void climb_begin(climb *c, const agjk_polytope *p, agjk_vec3 d,
+                                           int hint, double bound, int bounded) {
     c->v = p->vertices;
     c->offsets = p->neighbor_offsets;
     c->neighbors = p->neighbors;
@@ -95,7 +96,7 @@ static inline void climb_begin(climb *c, const agjk_polytope *p, agjk_vec3 d, in
     c->end = c->offsets[c->current + 1];
     c->left = p->vertex_count;
     c->near = -INFINITY;
-    c->far = (fabs(d.x) + fabs(d.y) + fabs(d.z)) * bound;
+    c->far = bounded ? (fabs(d.x) + fabs(d.y) + fabs(d.z)) * bound : 0.0;
 }
 
 /* The next neighbour test: 0 once the climb has ended (no better
@@ -226,7 +227,7 @@ static AGJK__NOINLINE void climb_settle(const agjk_polytope *p, agjk_vec3 d, int
          * certified by plateau_best, not by climb_clear: bounded, for the
          * cheaper step, with no bound) */
         climb c;
-        climb_begin(&c, p, d, -1 - best, 0.0);
+        climb_begin(&c, p, d, -1 - best, 0.0, 0);
         while (climb_step(&c, 1)) {
         }
         current = c.current;
@@ -259,7 +260,7 @@ static AGJK__ALWAYS_INLINE void polytope_support(const agjk_polytope *p, double 
         return;
     }
     climb c;
-    climb_begin(&c, p, d, *hint, bound);
+    climb_begin(&c, p, d, *hint, bound, bounded);
     while (climb_step(&c, bounded)) {
     }
     climb_answer(p, d, c.current, c.left == 0, climb_clear(&c, bounded), out, hint);
@@ -295,8 +296,8 @@ static AGJK__ALWAYS_INLINE void pair_support(const agjk_polytope *pa, double bou
         return;
     }
     climb a, b;
-    climb_begin(&a, pa, da, start_a, bound_a);
-    climb_begin(&b, pb, db, start_b, bound_b);
+    climb_begin(&a, pa, da, start_a, bound_a, bounded);
+    climb_begin(&b, pb, db, start_b, bound_b, bounded);
     int run_a = 1, run_b = 1;
     while (run_a & run_b) {
         run_a = climb_step(&a, bounded);

@@ -120,11 +120,13 @@ typedef struct agjk_prepared_polytope {
     /** The polytope (vertices and optional adjacency, as for
      *  agjk_shape_polytope()). */
     agjk_polytope polytope;
-    /** max |x|, |y|, |z| over the vertices. */
+    /** max |x|, |y|, |z| over the vertices, in the vertices' own length
+     *  units (the polytope's local frame). */
     double coordinate_bound;
     /** Where a query's first climb may start: the vertices farthest along
      *  +x, -x, +y, -y, +z, -z, then along the diagonals (+-1, +-1, +-1), the
      *  signs of x, y, z as bits 0, 1, 2 of the index - 6 (a set bit: -1).
+     *  Vertex indices, 0 .. vertex_count - 1.
      *  When both shapes of a query are prepared polytopes and both hints are
      *  0 (the default: a cold query), its first support starts from the one
      *  of these nearest the direction if it lies higher than vertex 0,
@@ -134,8 +136,8 @@ typedef struct agjk_prepared_polytope {
 } agjk_prepared_polytope;
 
 /** Fills `prepared` from `polytope` (checked as agjk_shape_polytope() checks
- *  it: O(vertices + edges), and 14 scans for the start vertices, once). `struct_size` must be
- *  sizeof(agjk_prepared_polytope) as the caller sees it; use
+ *  it: O(vertices + edges), and 14 scans for the start vertices, once).
+ *  `struct_size` must be sizeof(agjk_prepared_polytope) as the caller sees it; use
  *  agjk_polytope_prepare(). Returns AGJK_STATUS_OK, or
  *  AGJK_STATUS_INVALID_INPUT (NULL pointers, too small a struct_size, a
  *  polytope agjk_shape_polytope() rejects), then leaving `prepared`
@@ -152,8 +154,8 @@ static inline agjk_status agjk_polytope_prepare(agjk_prepared_polytope *prepared
 
 /** A shape from a prepared polytope: the same shape as
  *  agjk_shape_polytope(&prepared->polytope) gives, its support points found
- *  faster and certified alike. Checks the polytope again and that every vertex lies
- *  within `coordinate_bound` (O(vertices + edges), once): a prepared polytope
+ *  faster and certified alike. Checks the polytope again and that every
+ *  vertex lies within `coordinate_bound` (O(vertices + edges), once): a prepared polytope
  *  whose vertices moved after agjk_polytope_prepare() is rejected with
  *  AGJK_STATUS_INVALID_INPUT, as are NULL pointers, an unprepared struct and
  *  start vertices outside 0 .. vertex_count - 1.
