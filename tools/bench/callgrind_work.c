@@ -27,6 +27,7 @@
 #include "coal_bench.h"
 #include "ccd_adapter.h"
 #include "hull_support.h"
+#include "mesh_io.h"
 #include "problems.h"
 #include "solve.h"
 
@@ -52,6 +53,11 @@ static const workload workloads[] = {
     {"ellipsoids-overlapping-boolean", BENCH_ELLIPSOIDS, BENCH_OVERLAPPING, BENCH_BOOLEAN, 0},
     {"ellipsoids-distant-distance", BENCH_ELLIPSOIDS, BENCH_DISTANT, BENCH_DISTANCE, 0},
     {"hulls-overlapping", BENCH_HULLS, BENCH_OVERLAPPING, BENCH_DISTANCE, 141},
+    {"hulls-distant-distance", BENCH_HULLS, BENCH_DISTANT, BENCH_DISTANCE, 141},
+    /* Real meshes: AGJK_WORK_MESH_DIR (default out/meshes/random_urdfs, as
+     * tools/fetch-meshes.sh leaves them), scaled as agjk-bench scales them. */
+    {"meshes-distant-distance", BENCH_MESHES, BENCH_DISTANT, BENCH_DISTANCE, 0},
+    {"meshes-overlapping-boolean", BENCH_MESHES, BENCH_OVERLAPPING, BENCH_BOOLEAN, 0},
 };
 
 typedef struct agjk_query {
@@ -178,11 +184,29 @@ static int versus_mpr(void) {
     return v && strcmp(v, "mpr") == 0;
 }
 
+/* AGJK_WORK_VS=mode: the other is agjk itself in the other mode (distance
+ * for a Boolean workload and the reverse), on the same problems: what one
+ * mode costs over the other for the same support calls. */
+static int versus_mode(void) {
+    const char *v = getenv("AGJK_WORK_VS");
+    return v && strcmp(v, "mode") == 0;
+}
+
 static void time_one(const bench_set *set, const bench_problem *p, const workload *w, int reps,
                      time_stats *st) {
     agjk_query q;
     coal_query_desc d;
     agjk_query_init(&q, set, p, w);
+    if (versus_mode()) {
+        agjk_query other = q;
+        other.boolean = !q.boolean;
+        if (st->count < TIME_MAX) {
+            st->agjk_ns[st->count] = best_round(run_agjk, &q, reps);
+            st->coal_ns[st->count] = best_round(run_agjk, &other, reps);
+            ++st->count;
+        }
+        return;
+    }
     if (versus_mpr()) {
         static bench_ccd_query cq; /* points into itself: set up in place */
         bench_ccd_prepare(&cq, set, p, 1000);
@@ -226,7 +250,7 @@ static void time_report(time_stats *st, const char *name) {
             fprintf(stderr, "problem %d agjk_ns %.2f other_ns %.2f\n", i, st->agjk_ns[i],
                     st->coal_ns[i]);
     qsort(ratio, (size_t)st->count, sizeof ratio[0], cmp_double);
-    const char *other = versus_mpr() ? "mpr" : "coal";
+    const char *other = versus_mode() ? "agjk-other-mode" : versus_mpr() ? "mpr" : "coal";
     printf("%s: %d problems, mean ns agjk %.1f %s %.1f, median ratio agjk/%s %.3f\n", name,
            st->count, sa / st->count, other, sc / st->count, other,
            st->count ? ratio[st->count / 2] : 0.0);
@@ -235,6 +259,7 @@ static void time_report(time_stats *st, const char *name) {
 int main(int argc, char **argv) {
     const workload *w = NULL;
     bench_set set;
+    bench_mesh_source meshes = {0};
     bench_rng rng;
     time_stats stats = {0};
     int i, n = 0, max = argc > 3 ? atoi(argv[3]) : 40, coal, timing;
@@ -244,7 +269,7 @@ int main(int argc, char **argv) {
                         "       agjk-callgrind-work time WORKLOAD [PROBLEMS [REPS]]\n"
                         "environment: AGJK_WORK_METHOD=nesterov|normalized|polyak|adaptive, "
                         "AGJK_WORK_WITNESS=1, AGJK_WORK_VS=mpr (time: libccd's MPR "
-                        "instead of Coal), AGJK_WORK_PER_PROBLEM=1 (time: each "
+                        "instead of Coal) or mode (time: agjk in the other mode), AGJK_WORK_PER_PROBLEM=1 (time: each "
                         "problem's times on stderr)\n"
                         "WORKLOAD:");
         /* (from the table: the list cannot go stale) */
@@ -271,7 +296,14 @@ int main(int argc, char **argv) {
     set.polytope_hook = bench_hull_hook; /* as agjk-bench: the hull's vertex graph */
     set.aux_free = bench_hull_free;
     bench_rng_seed(&rng, 4 * 1 + (uint64_t)w->family);
-    bench_generate(&set, w->family, max / 4 + 1, 1, w->hull_n, NULL, &rng, 0, 0);
+    if (w->family == BENCH_MESHES) {
+        const char *dir = getenv("AGJK_WORK_MESH_DIR");
+        if (bench_read_mesh_dir(dir ? dir : "out/meshes/random_urdfs", &meshes, 1000, 0.1) < 1) {
+            fprintf(stderr, "agjk-callgrind-work: no meshes (set AGJK_WORK_MESH_DIR)\n");
+            return 3;
+        }
+    }
+    bench_generate(&set, w->family, max / 4 + 1, 1, w->hull_n, &meshes, &rng, 0, 0);
     for (i = 0; i < set.problem_count && n < max; ++i) {
         const bench_problem *p = &set.problems[i];
         agjk_query q;
@@ -311,5 +343,6 @@ int main(int argc, char **argv) {
     }
     if (timing) time_report(&stats, argv[2]);
     bench_set_free(&set);
+    bench_free_meshes(&meshes);
     return n > 0 ? 0 : 1;
 }
