@@ -57,13 +57,19 @@ static inline int agjk__ellipsoid_root(const agjk_ellipsoid *e, agjk_vec3 d, dou
 }
 
 /* Its support point is D^2 d / ||D d||: q = D^2 d and *inv = 1 / ||D d||
- * from the root above (one square root and one division). Power-of-two
- * scalings of d or of the radii scale every step exactly, so answers stay
- * bit-equivariant. */
+ * from the root above (one square root and one division), formed as
+ * ||D d|| / ||D d||^2: the division needs only the square, so it runs
+ * alongside the square root instead of after it, which takes the
+ * division's latency off GJK's chain of dependent steps (ellipsoid cells
+ * 2-3% faster, every category and mode). One rounding more: the support
+ * value <d, q inv> within 4.4 units of roundoff of ||D d||, against 4.2
+ * for 1 / ||D d|| (20 million random radii and directions, long double).
+ * Power-of-two scalings of d or of the radii scale every step exactly, so
+ * answers stay bit-equivariant. */
 static inline void agjk__ellipsoid_from_root(const agjk_ellipsoid *e, agjk_vec3 d, double root,
                                              agjk_vec3 *q, double *inv) {
     agjk_vec3 r = e->radii;
-    *inv = 1.0 / root;
+    *inv = root * (1.0 / agjk__ellipsoid_root2(e, d));
     *q = v3(r.x * (r.x * d.x), r.y * (r.y * d.y), r.z * (r.z * d.z));
 }
 
