@@ -25,6 +25,7 @@ separating-plane-epsilon|src/minkowski.h|s/double r = md->margin + md->noise;/do
 separated-without-certificate|src/query.c|s/status = lower > agjk__minkowski_separation_level(&md)/status = cb.core > md.margin/
 bound-too-small|src/query.c|s/result->bound = (distance - low) \* inv;/result->bound = 0.1 * (distance - low) * inv;/
 ellipsoid-radius-typo|src/shape_points.h|s/r.z \* (r.z \* d.z)/r.y * (r.z * d.z)/
+ellipsoid-support-biased|src/shape_points.h|s/    \*inv = root \* (1.0 \/ agjk__ellipsoid_root2(e, d));/    *inv = root * (1.0 \/ agjk__ellipsoid_root2(e, d)) * (1.0 + 4.0 * DBL_EPSILON);/
 ellipsoid-plate-unchecked|src/minkowski.c|s/smallest >= 0x1p-380/smallest >= 0.0/
 relative-tolerance-ignores-margins|src/solver.c|s/double b = (half \* (x_norm - md->margin - 2.0 \* md->noise)/double b = (half * (x_norm - 2.0 * md->noise)/
 witness-without-margin|src/query.c|s/agjk_vec3 wa = v3_scale(v3_add(out.a, v3_scale(cb.toward_x, md.margin_a)), inv);/agjk_vec3 wa = v3_scale(out.a, inv);/

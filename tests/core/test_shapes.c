@@ -635,6 +635,57 @@ START_TEST(ellipsoid_plates_keep_the_range_test) {
 }
 END_TEST
 
+/* An ellipsoid's support point D^2 d / ||D d||, from the callback, against
+ * long double: its support value <d, s> within 9 units of roundoff u of
+ * ||D d||, and the point on the surface (sum (s_i / r_i)^2 = 1) within
+ * 18 u. The bounds, to first order: ||D d||^2 is computed to 5 u, the
+ * square root and the reciprocal of the square (src/shape_points.h) give
+ * 1 / ||D d|| to 2.5 u plus three roundings, D^2 d takes 2 u and the
+ * product one more: 8.5 u on every (non-negative) term d_i s_i; the
+ * surface's sum of squares doubles the point's 8.5 u. These are the
+ * errors the solver's rounding allowance covers. Radii spanning six
+ * orders, directions of any size the callback computes without rescaling,
+ * axis-aligned ones included. */
+START_TEST(ellipsoid_support_within_roundoff) {
+    const long double u = DBL_EPSILON / 2.0;
+    tu_rng rng;
+    tu_rng_seed(&rng, 88);
+    long double worst_value = 0.0L, worst_surface = 0.0L;
+    for (int i = 0; i < 200000; i++) {
+        agjk_ellipsoid e;
+        e.radii = tu_vec(tu_log_uniform(&rng, -3, 3), tu_log_uniform(&rng, -3, 3),
+                         tu_log_uniform(&rng, -3, 3));
+        agjk_shape shape;
+        TU_CHECK_INT_EQ(agjk_shape_ellipsoid(&shape, &e), AGJK_STATUS_OK);
+        agjk_vec3 d = tu_scale(tu_unit_vector(&rng), tu_log_uniform(&rng, -5, 5));
+        if (i % 7 == 0) d.x = 0.0;
+        if (i % 11 == 0) d.y = 0.0;
+        if (i % 77 == 0) d.z = 1.0;
+        agjk_vec3 sp = tu_vec(NAN, NAN, NAN);
+        int hint = 0;
+        shape.support(shape.data, &d, &sp, &hint);
+        long double r[3] = {e.radii.x, e.radii.y, e.radii.z}, dv[3] = {d.x, d.y, d.z};
+        long double s3[3] = {sp.x, sp.y, sp.z}, n2 = 0.0L, value = 0.0L, surface = 0.0L;
+        for (int k = 0; k < 3; k++) {
+            n2 += (r[k] * dv[k]) * (r[k] * dv[k]);
+            value += dv[k] * s3[k];
+            surface += (s3[k] / r[k]) * (s3[k] / r[k]);
+        }
+        long double h = sqrtl(n2);
+        long double ev = fabsl(value - h) / (h * u), es = fabsl(surface - 1.0L) / u;
+        if (ev > worst_value) worst_value = ev;
+        if (es > worst_surface) worst_surface = es;
+        TU_ENSURE(ev <= 9.0L && es <= 18.0L,
+                  "radii (%.17g %.17g %.17g) d (%.17g %.17g %.17g): support value off by "
+                  "%.2Lf u, surface by %.2Lf u",
+                  e.radii.x, e.radii.y, e.radii.z, d.x, d.y, d.z, ev, es);
+    }
+    /* (Not a trivial pass: the errors are of the order of the bounds.) */
+    TU_ENSURE(worst_value > 1.0L && worst_surface > 1.0L,
+              "worst support value error %.2Lf u, surface %.2Lf u", worst_value, worst_surface);
+}
+END_TEST
+
 /* A random polytope on an ellipsoid, with its hull's adjacency when
  * `adjacency` (else scanned); n points. */
 static void pair_polytope(tu_rng *rng, agjk_polytope *poly, agjk_vec3 *verts, int32_t *tris,
@@ -1020,6 +1071,7 @@ int main(void) {
     TU_ADD(s, builtin_shapes);
     TU_ADD(s, direct_support_matches_callback);
     TU_ADD(s, ellipsoid_plates_keep_the_range_test);
+    TU_ADD(s, ellipsoid_support_within_roundoff);
     TU_ADD(s, constructors_reject_bad_sizes);
     TU_ADD(s, polytope_rejects_bad_vertices);
     TU_ADD(s, prepared_polytope_rejects_bad_input);
