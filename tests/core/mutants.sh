@@ -35,6 +35,7 @@ cone-support-biased|src/shape_cone.c|s/v3_dot(\*direction, apex) >= v3_dot(\*dir
 climb-certification-skipped|src/shape_polytope.c|s/    if (!cut \&\& clear) {/    if (1) {/
 climb-rising-edge-ignored|src/shape_polytope.c|s/            if (c == EDGE_UP) return -1 - u;/            if (c == EDGE_UP) continue;/
 climb-rounding-not-allowed|src/shape_polytope.c|s/    return c->near < c->current_dot - DOT_ROUNDING \* own - 0x1p-1000;/    return c->near < c->current_dot - 0x1p-1000;/
+prepared-climb-rounding-not-allowed|src/shape_polytope.c|s/    if (bounded) return c->near < c->current_dot - DOT_ROUNDING \* (2.0 \* c->far) - 0x1p-1000;/    if (bounded) return c->near < c->current_dot - 0x1p-1000;/
 prepared-starts-unchecked|src/shape_polytope.c|s/        if (prepared->starts\[k\] < 0 || prepared->starts\[k\] >= prepared->polytope.vertex_count)/        if (prepared->starts[k] < 0)/
 prepared-bound-unchecked|src/shape_polytope.c|s/        !(bound <= prepared->coordinate_bound) ||/        !(0.0 <= prepared->coordinate_bound) ||/
 rotation-check-loose|src/query_setup.c|s/#define ROTATION_TOLERANCE 1e-6/#define ROTATION_TOLERANCE 1e-1/
