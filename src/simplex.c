@@ -672,6 +672,22 @@ static unsigned thin_inside(const agjk_vec3 *w, int exhaustive, double lambda[4]
     return decline(w, 4, exhaustive, lambda, point);
 }
 
+/* tetra_inside's thin case: thin_inside's answer, or, when the caller can
+ * do without weights (notes->weights_optional), the enclosure without them
+ * (AGJK__WEIGHTS_DEFERRED): an overlap the solver certifies from the inside
+ * test's data needs none, and thin_inside's apex coordinates were about a
+ * tenth of such a query's instructions, on the chain to its answer
+ * (overlapping ellipsoids with Nesterov, Boolean and distance without
+ * witness points: 3-4% faster). */
+static unsigned thin_answer(const agjk_vec3 *w, int exhaustive, double lambda[4],
+                            agjk_vec3 *point, const agjk__projection_notes *notes) {
+    if (notes && notes->weights_optional) {
+        *point = v3(0.0, 0.0, 0.0);
+        return 0xFu | AGJK__INSIDE_REPORTED | AGJK__WEIGHTS_DEFERRED;
+    }
+    return thin_inside(w, exhaustive, lambda, point, notes);
+}
+
 /* The thin face of the tetrahedron leaving out w_k (taken = 1 + k), which
  * holds the answer by the Gram tests: its projection by the exhaustive
  * triangle routine (the face's own degeneracy-proof case analysis, vertices
@@ -735,7 +751,7 @@ static unsigned gjk_tetrahedron(const agjk_vec3 *w, const agjk_vec3 *newest, int
          * with Nesterov, about one query in two ends so (before, every
          * time inside by the exhaustive projection after every face and
          * edge had failed). */
-        if (thin) return thin_inside(w, exhaustive, lambda, point, notes);
+        if (thin) return thin_answer(w, exhaustive, lambda, point, notes);
     }
     if (!holds) {
         k = back == 0 ? 1 : 0;
@@ -768,7 +784,7 @@ static unsigned gjk_tetrahedron(const agjk_vec3 *w, const agjk_vec3 *newest, int
     if (!mask && !inward) {
         int thin = 0;
         mask = tetra_inside(w, e, gd, lambda, point, notes, &thin);
-        if (thin) return thin_inside(w, exhaustive, lambda, point, notes);
+        if (thin) return thin_answer(w, exhaustive, lambda, point, notes);
     }
     return mask ? mask : decline(w, 4, exhaustive, lambda, point);
 }

@@ -48,11 +48,19 @@ typedef struct agjk__projection_notes {
     const double *rotation; /* R, row-major */
     agjk_vec3 turned;       /* R^T x, when turned_valid */
     int turned_valid;
+    /* The caller can do without an enclosure's weights (below). */
+    int weights_optional;
 } agjk__projection_notes;
 
 /* Set in the mask (with the four vertex bits) by
  * agjk__simplex_project_gjk_noted when it wrote notes->inside. */
 #define AGJK__INSIDE_REPORTED 0x10u
+/* Set with AGJK__INSIDE_REPORTED when the inside test found the origin
+ * clearly inside a tetrahedron too thin for its own weights and
+ * notes->weights_optional: *point is 0, lambda is not written. The same
+ * call without weights_optional gives the weights (or, where they fail,
+ * the exhaustive projection's answer). */
+#define AGJK__WEIGHTS_DEFERRED 0x20u
 
 /* agjk__simplex_project_gjk, with notes (or NULL): notes->inside as above
  * when that test found the origin inside (the mask then has

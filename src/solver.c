@@ -576,9 +576,14 @@ static agjk_vec3 member_point(const solver *sv) {
     return member_point_from(sv, active_combination(sv));
 }
 
+/* update_simplex's answer for an enclosure whose weights the projection
+ * left out (AGJK__WEIGHTS_DEFERRED): x is 0, sv->lambda not written. */
+#define ENCLOSED_UNWEIGHED 2
+
 /* Adds s to the active set and projects the origin onto its hull, keeping only
  * the vertices with positive weight (Alg. 4 line 7 / Alg. 5). Returns 1 when
- * the origin is enclosed by a full tetrahedron. in_slot: support() has put
+ * the origin is enclosed by a full tetrahedron (ENCLOSED_UNWEIGHED when its
+ * weights were left out). in_slot: support() has put
  * s->w in sv->w[sv->count] already. The projection reads the new point from
  * s->w, not from the slot, where a copy would have put it one more
  * store-to-load round trip later (GJK's chain of dependent steps: overlapping
@@ -610,7 +615,7 @@ static AGJK__ALWAYS_INLINE int update_simplex(solver *sv, const agjk__vertex *s,
     if ((mask & 0xFu) == 0xFu) {
         sv->inside_reported = (mask & AGJK__INSIDE_REPORTED) != 0;
         sv->count = 4;
-        return 1;
+        return mask & AGJK__WEIGHTS_DEFERRED ? ENCLOSED_UNWEIGHED : 1;
     }
     /* Keep the support set in index order: the kept indices from a table
      * and three slots always written (a 4-vertex set returned above), rather
@@ -637,6 +642,23 @@ static AGJK__ALWAYS_INLINE int update_simplex(solver *sv, const agjk__vertex *s,
     }
     sv->count = support_size[mask & 0xFu];
     return 0;
+}
+
+/* An enclosure update_simplex left without its weights (ENCLOSED_UNWEIGHED)
+ * that the inside test's data did not certify: the projection again, with
+ * the weights, which gives what update_simplex would have (the same four
+ * points; a thin tetrahedron whose weights fail gets the exhaustive
+ * projection's answer). Returns update_simplex's answer. */
+static AGJK__NOINLINE int weigh_enclosure(solver *sv, agjk_vec3 *x) {
+    sv->notes.weights_optional = 0;
+    sv->count = 3;
+    agjk__vertex s;
+    s.w = sv->w[3];
+    s.a = sv->keep_a ? sv->a[3] : v3(0.0, 0.0, 0.0); /* (written back as they are) */
+    s.b = sv->keep_b ? sv->b[3] : v3(0.0, 0.0, 0.0);
+    int enclosed = update_simplex(sv, &s, 1, x);
+    sv->notes.weights_optional = 1;
+    return enclosed;
 }
 
 /* What one Frank-Wolfe step's rounding may move its iterate by, in units of
@@ -893,6 +915,8 @@ static AGJK__ALWAYS_INLINE void solve(agjk__minkowski *md, const agjk__solve_inp
     sv.drift = 0.0;
     sv.notes.rotation = &md->rotation[0][0];
     sv.notes.turned_valid = 0;
+    /* (An overlap's weights serve only its witness points.) */
+    sv.notes.weights_optional = !in->want_witness;
 
     out->outcome = AGJK__ITERATION_CAP;
     out->gap = INFINITY;
@@ -1096,6 +1120,21 @@ static AGJK__ALWAYS_INLINE void solve(agjk__minkowski *md, const agjk__solve_inp
             enclosed = v3_norm2(x_new) == 0.0;
         } else {
             enclosed = update_simplex(&sv, &s, in_slot, &x_new);
+            if (enclosed == ENCLOSED_UNWEIGHED) {
+                /* The origin clearly inside a thin tetrahedron: certified
+                 * from the inside test's data as below, the overlap needs no
+                 * weights; otherwise they are taken after all, and the
+                 * iteration goes on as it would have with them. */
+                double noise = md->noise;
+                if (noise == 0.0 || deep_enclosure(&sv, noise) || shallow_faces(sv.w, noise) == 0) {
+                    sv.x = x_new;
+                    sv.x2 = 0.0;
+                    out->gap_valid = 0;
+                    out->outcome = AGJK__INTERSECTING;
+                    break;
+                }
+                enclosed = weigh_enclosure(&sv, &x_new);
+            }
         }
         double x_new2 = v3_norm2(x_new);
         int no_progress = have_x && !enclosed && x_new2 >= sv.x2;

@@ -373,6 +373,37 @@ static long double det_l(agjk_vec3 p, agjk_vec3 q, agjk_vec3 r) {
            (long double)p.z * ((long double)q.x * r.y - (long double)q.y * r.x);
 }
 
+/* The same call with weights_optional: the same answer, bit for bit; or,
+ * only for an enclosure the inside test reported (and only on a thin
+ * tetrahedron, where the weights come from the exhaustive projection's
+ * enclosed case, or the exhaustive projection itself when they fail:
+ * deferred_declined counts those), the enclosure without its weights: the mask with AGJK__WEIGHTS_DEFERRED, x
+ * exactly 0, the weights left as they were, and the same inside data. */
+static long deferred_weights, deferred_declined;
+static void check_deferred(const agjk_vec3 *w, unsigned mask, const double l[4],
+                           const agjk_vec3 *p, const agjk__projection_notes *weighed,
+                           const char *what, int i) {
+    agjk__projection_notes notes;
+    notes.rotation = NULL;
+    notes.weights_optional = 1;
+    double ld[4] = {NAN, NAN, NAN, NAN};
+    agjk_vec3 pd;
+    unsigned md = agjk__simplex_project_gjk_noted(w, 4, ld, &pd, &notes, &w[3]);
+    if (!(md & AGJK__WEIGHTS_DEFERRED)) {
+        TU_ENSURE(md == mask && memcmp(ld, l, sizeof ld) == 0 && memcmp(&pd, p, sizeof pd) == 0,
+                  "%s %d: weights optional: mask 0x%x, weighed 0x%x", what, i, md, mask);
+        return;
+    }
+    ++deferred_weights;
+    deferred_declined += mask != (0xFu | AGJK__INSIDE_REPORTED);
+    TU_ENSURE(md == (0xFu | AGJK__INSIDE_REPORTED | AGJK__WEIGHTS_DEFERRED) &&
+                  pd.x == 0.0 && pd.y == 0.0 && pd.z == 0.0 &&
+                  isnan(ld[0]) && isnan(ld[1]) && isnan(ld[2]) && isnan(ld[3]),
+              "%s %d: deferred weights with mask 0x%x (weighed 0x%x)", what, i, md, mask);
+    TU_ENSURE(memcmp(&notes.inside, &weighed->inside, sizeof notes.inside) == 0,
+              "%s %d: deferred weights with other inside data", what, i);
+}
+
 /* agjk__simplex_project_gjk_noted on a tetrahedron: the same answer, bit
  * for bit, as agjk__simplex_project_gjk (mask, weights), and when it reports
  * its inside test's data (AGJK__INSIDE_REPORTED), an enclosure whose depth
@@ -383,12 +414,14 @@ static void check_inside(const agjk_vec3 *w, unsigned mask, const double l[4], c
                          int i) {
     agjk__projection_notes notes;
     notes.rotation = NULL;
+    notes.weights_optional = 0;
     const agjk__inside *inside = &notes.inside;
     double li[4];
     agjk_vec3 pi;
     unsigned mi = agjk__simplex_project_gjk_noted(w, 4, li, &pi, &notes, &w[3]);
     TU_ENSURE((mi & ~AGJK__INSIDE_REPORTED) == mask && memcmp(li, l, sizeof li) == 0,
               "%s %d: the inside variant answers mask 0x%x, plain 0x%x", what, i, mi, mask);
+    check_deferred(w, mi, li, &pi, &notes, what, i);
     if (!(mi & AGJK__INSIDE_REPORTED)) return;
     ++inside_reported;
     TU_ENSURE(mask == 0xFu, "%s %d: inside data with mask 0x%x", what, i, mask);
@@ -420,6 +453,7 @@ static void check_turned(const agjk_vec3 *w, int n, unsigned mask, const double 
     agjk__projection_notes notes;
     notes.rotation = r;
     notes.turned_valid = 0;
+    notes.weights_optional = 0;
     double lt[4] = {NAN, NAN, NAN, NAN}; /* (as check_gjk's: entries past n may stay) */
     agjk_vec3 pt;
     unsigned mt = agjk__simplex_project_gjk_noted(w, n, lt, &pt, &notes, &w[n - 1]);
@@ -479,7 +513,9 @@ static void print_counts(const char *what, const gjk_counts *c) {
         if (c->calls[n])
             printf("  n=%d %ld/%ld (fallback %.2f%%)", n, c->fast[n], c->calls[n],
                    100.0 * (double)(c->calls[n] - c->fast[n]) / (double)c->calls[n]);
-    printf("; inside data %ld, turned points %ld\n", inside_reported, turned_points);
+    printf("; inside data %ld (weights deferred %ld, of which the weighed answer declined %ld), "
+           "turned points %ld\n",
+           inside_reported, deferred_weights, deferred_declined, turned_points);
 }
 
 START_TEST(gjk_random_simplices) {
