@@ -644,12 +644,22 @@ static AGJK__ALWAYS_INLINE int update_simplex(solver *sv, const agjk__vertex *s,
     return 0;
 }
 
+/* Whether an enclosure left without its weights (ENCLOSED_UNWEIGHED) is
+ * certified as the loop certifies any enclosure (from the inside test's
+ * data, or with no face of the tetrahedron within rounding of the origin).
+ * Out of line, as the weighing below (cold): the loop's copy of these tests
+ * stays its only inline one. */
+static AGJK__NOINLINE int unweighed_overlap(const solver *sv) {
+    double noise = sv->md->noise;
+    return noise == 0.0 || deep_enclosure(sv, noise) || shallow_faces(sv->w, noise) == 0;
+}
+
 /* An enclosure update_simplex left without its weights (ENCLOSED_UNWEIGHED)
  * that the inside test's data did not certify: the projection again, with
  * the weights, which gives what update_simplex would have (the same four
  * points; a thin tetrahedron whose weights fail gets the exhaustive
  * projection's answer). Returns update_simplex's answer. */
-static AGJK__NOINLINE int weigh_enclosure(solver *sv, agjk_vec3 *x) {
+static AGJK__NOINLINE AGJK__COLD int weigh_enclosure(solver *sv, agjk_vec3 *x) {
     sv->notes.weights_optional = 0;
     sv->count = 3;
     agjk__vertex s;
@@ -1125,8 +1135,7 @@ static AGJK__ALWAYS_INLINE void solve(agjk__minkowski *md, const agjk__solve_inp
                  * from the inside test's data as below, the overlap needs no
                  * weights; otherwise they are taken after all, and the
                  * iteration goes on as it would have with them. */
-                double noise = md->noise;
-                if (noise == 0.0 || deep_enclosure(&sv, noise) || shallow_faces(sv.w, noise) == 0) {
+                if (unweighed_overlap(&sv)) {
                     sv.x = x_new;
                     sv.x2 = 0.0;
                     out->gap_valid = 0;
