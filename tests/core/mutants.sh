@@ -34,7 +34,7 @@ simplex-weights-permuted|src/simplex.c|s/projection->weights\[i\] = lambda\[i\];
 cone-support-biased|src/shape_cone.c|s/v3_dot(\*direction, apex) >= v3_dot(\*direction, rim)/v3_dot(*direction, apex) >= 0.9 * v3_dot(*direction, rim)/
 climb-certification-skipped|src/shape_polytope.c|s/    if (!cut \&\& clear) {/    if (1) {/
 climb-rising-edge-ignored|src/shape_polytope.c|s/            if (c == EDGE_UP) return -1 - u;/            if (c == EDGE_UP) continue;/
-climb-rounding-not-allowed|src/shape_polytope.c|s/    return c->near < c->current_dot - DOT_ROUNDING \* own - 0x1p-1000;/    return c->near < c->current_dot - 0x1p-1000;/
+climb-rounding-not-allowed|src/shape_polytope.c|s/    return c->near < c->current_dot - DOT_ROUNDING \* own - 0x1p-1000;/    return c->near < c->current_dot - 0x1p-1000;/;s/double high = bounded ? dot : dot + DOT_ROUNDING \* (fabs(px) + fabs(py) + fabs(pz));/double high = dot;/
 prepared-climb-rounding-not-allowed|src/shape_polytope.c|s/    if (bounded) return c->near < c->current_dot - DOT_ROUNDING \* (2.0 \* c->far) - 0x1p-1000;/    if (bounded) return c->near < c->current_dot - 0x1p-1000;/
 prepared-starts-unchecked|src/shape_polytope.c|s/        if (prepared->starts\[k\] < 0 || prepared->starts\[k\] >= prepared->polytope.vertex_count)/        if (prepared->starts[k] < 0)/
 prepared-bound-unchecked|src/shape_polytope.c|s/        !(bound <= prepared->coordinate_bound) ||/        !(0.0 <= prepared->coordinate_bound) ||/

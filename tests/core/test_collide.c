@@ -84,8 +84,7 @@ static void run_target(tu_rng *rng, double target, agjk_tolerance_mode mode, dou
         }
         double size = tu_bounding_radius(&a) + tu_bounding_radius(&b);
         agjk_shape sa, sb;
-        TU_CHECK_INT_EQ(ref_make_agjk(&a, &sa), AGJK_STATUS_OK);
-        TU_CHECK_INT_EQ(ref_make_agjk(&b, &sb), AGJK_STATUS_OK);
+        core_make_shapes(&a, &b, &sa, &sb);
         for (int m = 0; m < CORE_METHOD_COUNT; m++) {
             agjk_options o = agjk_default_options();
             o.method = core_methods[m];
@@ -231,8 +230,7 @@ START_TEST(enclosure_weights_deferred) {
             TU_CHECK_INT_EQ(
                 tu_set_distance(&a, &pa, &b, &pb, depths[t % 6] * sc * (big ? 1e-3 : 1.0), NULL), 0);
             agjk_shape sa, sb;
-            TU_CHECK_INT_EQ(ref_make_agjk(&a, &sa), AGJK_STATUS_OK);
-            TU_CHECK_INT_EQ(ref_make_agjk(&b, &sb), AGJK_STATUS_OK);
+            core_make_shapes(&a, &b, &sa, &sb);
             for (int m = 0; m < CORE_METHOD_COUNT; m++) {
                 agjk_options o = agjk_default_options();
                 o.method = core_methods[m];
@@ -284,8 +282,7 @@ START_TEST(first_plane_along_offset) {
         double apart = i % 8 == 0 ? 1e-6 * size : k * DBL_EPSILON * size;
         pb.translation = tu_add(pa.translation, tu_scale(u, (double)(ha + hb) + apart));
         agjk_shape sa, sb;
-        TU_CHECK_INT_EQ(ref_make_agjk(&a, &sa), AGJK_STATUS_OK);
-        TU_CHECK_INT_EQ(ref_make_agjk(&b, &sb), AGJK_STATUS_OK);
+        core_make_shapes(&a, &b, &sa, &sb);
         for (int m = 0; m < CORE_METHOD_COUNT; m++) {
             agjk_options o = agjk_default_options();
             o.method = core_methods[m];

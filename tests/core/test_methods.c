@@ -272,8 +272,7 @@ START_TEST(warm_start) {
         double target = targets[i % N_TARGETS];
         TU_CHECK_INT_EQ(tu_set_distance(&a, &pa, &b, &pb, target, NULL), 0);
         agjk_shape sa, sb;
-        TU_CHECK_INT_EQ(ref_make_agjk(&a, &sa), AGJK_STATUS_OK);
-        TU_CHECK_INT_EQ(ref_make_agjk(&b, &sb), AGJK_STATUS_OK);
+        core_make_shapes(&a, &b, &sa, &sb);
         for (int m = 0; m < 4; m++) { /* FW excluded: its cap makes the counts noisy */
             agjk_options o = agjk_default_options();
             o.method = core_methods[m];

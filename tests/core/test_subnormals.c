@@ -83,8 +83,7 @@ START_TEST(ordinary_queries_form_no_subnormal) {
                 agjk_pose pa = tu_random_pose(&rng, 1.0), pb = tu_random_pose(&rng, 1.0);
                 TU_CHECK_INT_EQ(tu_set_distance(&a, &pa, &b, &pb, targets[t], NULL), 0);
                 agjk_shape sa, sb;
-                TU_CHECK_INT_EQ(ref_make_agjk(&a, &sa), AGJK_STATUS_OK);
-                TU_CHECK_INT_EQ(ref_make_agjk(&b, &sb), AGJK_STATUS_OK);
+                core_make_shapes(&a, &b, &sa, &sb);
                 for (int m = 0; m < CORE_METHOD_COUNT; m++) {
                     agjk_options o = agjk_default_options();
                     o.method = core_methods[m];
