@@ -14,9 +14,8 @@ static const agjk_method core_methods[CORE_METHOD_COUNT] = {
     AGJK_METHOD_GJK, AGJK_METHOD_NESTEROV, AGJK_METHOD_NESTEROV_NORMALIZED, AGJK_METHOD_POLYAK,
     AGJK_METHOD_FRANK_WOLFE, AGJK_METHOD_ADAPTIVE};
 
-/* The agjk shapes of a reference pair. */
-static inline void core_make_shapes(const ref_shape *a, const ref_shape *b, agjk_shape *sa,
-                                    agjk_shape *sb) {
+/* The agjk shapes of a reference pair (which point into a and b). */
+static inline void core_make_shapes(ref_shape *a, ref_shape *b, agjk_shape *sa, agjk_shape *sb) {
     TU_CHECK_INT_EQ(ref_make_agjk(a, sa), AGJK_STATUS_OK);
     TU_CHECK_INT_EQ(ref_make_agjk(b, sb), AGJK_STATUS_OK);
 }
