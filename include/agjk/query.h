@@ -51,9 +51,11 @@ AGJK_API agjk_status agjk_distance(const agjk_shape *a, const agjk_pose *pose_a,
  *
  * Stops at the first support plane that separates D from the origin
  * (AGJK_STATUS_SEPARATED, result->normal is that plane's normal), or when the
- * origin is enclosed by the simplex (AGJK_STATUS_INTERSECTING). If the duality
- * gap meets the tolerance first, the shapes are closer than the tolerance and
- * neither answer is certain: AGJK_STATUS_CONTACT_WITHIN_TOLERANCE. Computes no
+ * origin is enclosed by the simplex (AGJK_STATUS_INTERSECTING). A query whose
+ * duality gap meets the tolerance first goes on, as agjk_distance() does, until
+ * a separating plane or an enclosure decides (at most 32 more iterations);
+ * shapes within rounding of contact, or too close for those iterations, end
+ * with AGJK_STATUS_CONTACT_WITHIN_TOLERANCE (see agjk_status). Computes no
  * witness points and no distance. */
 AGJK_API agjk_status agjk_collide(const agjk_shape *a, const agjk_pose *pose_a,
                                   const agjk_shape *b, const agjk_pose *pose_b,
