@@ -8,7 +8,10 @@
 #  - every key of the JSON and text outputs below, and every exit status of
 #    `agjk --help`, appears in the man page;
 #  - agjk(3) describes every public header (include/agjk/*.h), and both pages
-#    carry the version of `agjk --version`.
+#    carry the version of `agjk --version`;
+#  - each sample session of README.md (a ```sh block holding one
+#    `out/tools/cli/agjk ...` command, followed by a ``` block) shows what
+#    that command prints, to the last digit.
 # A new option or output key fails this test until man/agjk.1 documents it
 # (a new JSON key: add the command line that prints it to QUERIES below).
 #
@@ -113,6 +116,32 @@ done
 for h in "$SRC"/include/agjk/*.h; do
     h=agjk/$(basename "$h")
     if grep -q "^\.I $h\$" "$SRC/man/agjk.3"; then pass=$((pass + 1)); else bad "agjk(3) does not describe <$h>"; fi
+done
+
+# README.md's sample sessions, run from the source tree (their paths are
+# relative to it).
+awk -v out="$tmp/readme" '
+    /^```sh$/ { getline cmd; getline close_sh; getline open_out
+        if (cmd ~ /^out\/tools\/cli\/agjk / && close_sh == "```" && open_out == "```") {
+            n++; print substr(cmd, 20) > (out "." n ".cmd")
+            while ((getline line) > 0 && line != "```") print line > (out "." n ".want")
+        } }
+    END { print n + 0 > (out ".count") }' "$SRC/README.md"
+samples=$(cat "$tmp/readme.count")
+[ "$samples" -gt 0 ] || bad "README.md: no sample session of out/tools/cli/agjk found"
+i=1
+while [ "$i" -le "$samples" ]; do
+    args=$(cat "$tmp/readme.$i.cmd")
+    # shellcheck disable=SC2086
+    (cd "$SRC" && "$AGJK" $args) >"$tmp/readme.$i.got" 2>/dev/null
+    touch "$tmp/readme.$i.want"
+    if cmp -s "$tmp/readme.$i.got" "$tmp/readme.$i.want"; then
+        pass=$((pass + 1))
+    else
+        bad "README.md: 'agjk $args' prints otherwise than its sample"
+        diff "$tmp/readme.$i.want" "$tmp/readme.$i.got" | sed 's/^/    /' | head -20
+    fi
+    i=$((i + 1))
 done
 
 echo "man page sync: $pass passed, $fail failed"
