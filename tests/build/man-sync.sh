@@ -128,12 +128,15 @@ awk -v out="$tmp/readme" '
         } }
     END { print n + 0 > (out ".count") }' "$SRC/README.md"
 samples=$(cat "$tmp/readme.count")
+# (The binary by an absolute path: meson passes one relative to its build
+# directory, and the samples run from the source tree.)
+agjk_abs=$(cd "$(dirname "$AGJK")" && pwd)/$(basename "$AGJK")
 [ "$samples" -gt 0 ] || bad "README.md: no sample session of out/tools/cli/agjk found"
 i=1
 while [ "$i" -le "$samples" ]; do
     args=$(cat "$tmp/readme.$i.cmd")
     # shellcheck disable=SC2086
-    (cd "$SRC" && "$AGJK" $args) >"$tmp/readme.$i.got" 2>/dev/null
+    (cd "$SRC" && "$agjk_abs" $args) >"$tmp/readme.$i.got" 2>/dev/null
     touch "$tmp/readme.$i.want"
     if cmp -s "$tmp/readme.$i.got" "$tmp/readme.$i.want"; then
         pass=$((pass + 1))
